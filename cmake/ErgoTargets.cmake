@@ -1,0 +1,40 @@
+# Helpers that keep each pipeline stage a separate library with its own test binary,
+# so `ctest -R Stage` runs one stage and a broken stage does not stop the others building.
+
+# ergo_stage_library(NAME DEPENDS dep...): a static library from every .cc in the
+# current folder (and its subfolders), named ergo_NAME.
+function(ergo_stage_library name)
+  cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cc)
+  add_library(ergo_${name} STATIC ${sources})
+  target_include_directories(ergo_${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(ergo_${name} PUBLIC ${ARG_DEPENDS})
+  set_target_properties(ergo_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()
+
+# ergo_stage_tests(NAME LIBS lib...): one GoogleTest binary from tests/NAME/*.cc,
+# every test case registered with CTest.
+function(ergo_stage_tests name)
+  cmake_parse_arguments(ARG "" "" "LIBS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cc)
+  if(NOT sources)
+    return()
+  endif()
+  add_executable(${name}_tests ${sources})
+  target_link_libraries(${name}_tests PRIVATE ${ARG_LIBS} ergo_test_support GTest::gtest
+                        GTest::gtest_main)
+  gtest_discover_tests(${name}_tests
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+    DISCOVERY_TIMEOUT 60
+    PROPERTIES ENVIRONMENT "ERGO_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+endfunction()
+
+# ergo_benchmark(NAME SOURCE LIBS lib...): a Google Benchmark program (never a test).
+function(ergo_benchmark name source)
+  cmake_parse_arguments(ARG "" "" "LIBS" ${ARGN})
+  if(NOT ERGO_BUILD_BENCHMARKS)
+    return()
+  endif()
+  add_executable(${name} ${source})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} benchmark::benchmark)
+endfunction()

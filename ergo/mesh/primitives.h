@@ -1,0 +1,31 @@
+// Closed primitive meshes used by scenarios, tests and benchmarks: an icosphere, a
+// subdivided box, a torus, and a structured tetrahedral grid. All outward-oriented
+// (surfaces) or positively oriented (tets), coordinates in metres.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "ergo/mesh/tri_mesh.h"
+
+namespace ergo {
+
+// Icosahedron refined `subdivisions` times and projected onto the sphere:
+// 10·4^s + 2 vertices, 20·4^s triangles.
+TriMesh MakeIcosphere(double radius, int subdivisions,
+                      const Eigen::Vector3d& centre = Eigen::Vector3d::Zero());
+
+// Surface of the axis-aligned box [lo, hi], each face split into a grid of
+// cells(axis) x cells(other axis) squares, two triangles each.
+TriMesh MakeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                const Eigen::Vector3i& cells);
+
+// Torus around the z axis: tube radius `minor` swept on a circle of radius `major`.
+TriMesh MakeTorus(double major, double minor, int major_segments, int minor_segments);
+
+// The box [lo, hi] split into cells(0) x cells(1) x cells(2) cubes, each cut into six
+// tetrahedra along its main diagonal (Kuhn triangulation, conforming across cells).
+TetMesh MakeTetGrid(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                    const Eigen::Vector3i& cells);
+
+}  // namespace ergo

@@ -1,0 +1,17 @@
+// Where tests find the project's files, the shared peer-mesh corpus, and scratch space.
+#pragma once
+
+#include <string>
+
+namespace ergo::testing {
+
+// Absolute path of a file in the source tree, e.g. SourcePath("tests/mesh/corpus").
+std::string SourcePath(const std::string& relative);
+
+// ../shared/peer-meshes next to the checkout, or "" when absent (a user's clone).
+std::string PeerMeshDir();
+
+// A fresh empty directory under the system temp dir, unique per call.
+std::string MakeScratchDir(const std::string& prefix);
+
+}  // namespace ergo::testing

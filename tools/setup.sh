@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# ergo set-up: installs what is missing (Debian 12, apt-get), builds, and runs.
+#
+#   tools/setup.sh run            install + build + run the main job
+#   tools/setup.sh test           install + build + run the whole test suite (ctest)
+#   tools/setup.sh test --sanitize  the same with AddressSanitizer + UBSan (build-sanitize/)
+#
+# Idempotent: when every package is present it installs nothing and says nothing about it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode="${1:-}"
+sanitize=0
+[ "${2:-}" = "--sanitize" ] && sanitize=1
+case "$mode" in run | test) ;; *)
+  echo "usage: tools/setup.sh run|test [--sanitize]" >&2
+  exit 2
+  ;;
+esac
+
+packages=(build-essential cmake pkg-config libeigen3-dev libceres-dev libsuitesparse-dev
+  libopenblas-dev libnlopt-cxx-dev libcgal-dev libgflags-dev libgoogle-glog-dev libtbb-dev
+  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-matplotlib)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+if [ "$sanitize" = 1 ]; then
+  build=build-sanitize
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DERGO_SANITIZE=ON \
+    -DERGO_BUILD_BENCHMARKS=OFF >/dev/null
+else
+  build=build
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build "$build" -j "$jobs"
+
+if [ "$mode" = test ]; then
+  # Sanitizer runs: fail on the first report, and detect leaks (LeakSanitizer).
+  export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
+  export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+  ctest --test-dir "$build" --output-on-failure -j "$jobs"
+else
+  "$build/bin/ergo_mesh" check data/meshes/support_sphere.off --closed
+fi
