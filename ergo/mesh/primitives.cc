@@ -36,9 +36,9 @@ TriMesh MakeIcosphere(double radius, int subdivisions, const Eigen::Vector3d& ce
                               {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
   for (Vec3& p : points) p.normalize();
   std::vector<std::array<int, 3>> faces = {
-      {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
       {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int level = 0; level < subdivisions; ++level) {
     std::map<std::pair<int, int>, int> midpoint;
     auto middle = [&](int a, int b) {
@@ -98,7 +98,8 @@ TriMesh MakeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
             return vertex(ijk);
           };
           const int a = corner(0, 0), b = corner(1, 0), c = corner(1, 1), d = corner(0, 1);
-          for (std::array<int, 3> tri : {std::array<int, 3>{a, b, c}, std::array<int, 3>{a, c, d}}) {
+          for (std::array<int, 3> tri :
+               {std::array<int, 3>{a, b, c}, std::array<int, 3>{a, c, d}}) {
             const Vec3 n = (points[tri[1]] - points[tri[0]]).cross(points[tri[2]] - points[tri[0]]);
             if (n.dot(outward) < 0) std::swap(tri[1], tri[2]);
             faces.push_back(tri);

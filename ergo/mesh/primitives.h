@@ -17,8 +17,7 @@ TriMesh MakeIcosphere(double radius, int subdivisions,
 
 // Surface of the axis-aligned box [lo, hi], each face split into a grid of
 // cells(axis) x cells(other axis) squares, two triangles each.
-TriMesh MakeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
-                const Eigen::Vector3i& cells);
+TriMesh MakeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const Eigen::Vector3i& cells);
 
 // Torus around the z axis: tube radius `minor` swept on a circle of radius `major`.
 TriMesh MakeTorus(double major, double minor, int major_segments, int minor_segments);

@@ -56,9 +56,11 @@ SweepResult CheckJacobianVector(const VectorFunction& g, const Eigen::VectorXd& 
 namespace {
 
 // Directions to test: random unit vectors, a preferred direction, coordinate axes.
-std::vector<std::pair<std::string, Eigen::VectorXd>> Directions(
-    Eigen::Index n, const Eigen::VectorXd& preferred, int random_directions,
-    int max_coordinates, unsigned seed) {
+std::vector<std::pair<std::string, Eigen::VectorXd>> Directions(Eigen::Index n,
+                                                                const Eigen::VectorXd& preferred,
+                                                                int random_directions,
+                                                                int max_coordinates,
+                                                                unsigned seed) {
   std::vector<std::pair<std::string, Eigen::VectorXd>> directions;
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal;
@@ -110,8 +112,7 @@ double WorstJacobianError(const VectorFunction& g, const Eigen::MatrixXd& jacobi
   }
   for (const auto& [name, d] :
        Directions(x.size(), preferred, random_directions, max_coordinates, seed)) {
-    const SweepResult r =
-        CheckJacobianVector(g, x, d, jacobian * d, scale_floor, steps);
+    const SweepResult r = CheckJacobianVector(g, x, d, jacobian * d, scale_floor, steps);
     if (r.best_relative_error >= worst) {
       worst = r.best_relative_error;
       if (report) *report = "direction " + name + ":\n" + r.report;
