@@ -1,0 +1,34 @@
+// BodyState: the reduced coordinates y = (u^F, q) of paper §3.3 — displacements of the free
+// tet vertices and the rigid core's pose q = (centre c, rotation R). Attached vertices
+// follow the core: p_a = c + R (X_a − C₀). Rotations are updated multiplicatively,
+// R ← exp([δθ]×) R (DESIGN.md §3).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "ergo/body/layered_body.h"
+
+namespace ergo {
+
+struct BodyState {
+  Eigen::VectorXd free_displacement;                       // 3·#free, metres, free-vertex order
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();        // c: world position of C₀
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // R
+  // Σ δθ over all updates: the angle the external torque works through (Eq. 9's linear
+  // term). Exact for a single free rotation axis; a path integral otherwise.
+  Eigen::Vector3d torque_angle = Eigen::Vector3d::Zero();
+};
+
+// The undeformed body at its rest pose.
+BodyState RestState(const LayeredBody& body);
+
+// The rest body translated rigidly by `offset` (e.g. lifted above a support).
+BodyState TranslatedRestState(const LayeredBody& body, const Eigen::Vector3d& offset);
+
+// World positions of every tet-mesh vertex (#V x 3).
+Vertices DeformedPositions(const LayeredBody& body, const BodyState& state);
+
+// exp([θ]×) by Rodrigues' formula (accurate for small |θ|).
+Eigen::Matrix3d RotationExp(const Eigen::Vector3d& theta);
+
+}  // namespace ergo

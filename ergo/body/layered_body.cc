@@ -1,0 +1,251 @@
+#include "ergo/body/layered_body.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include "ergo/mesh/input_error.h"
+#include "ergo/mesh/surface_geometry.h"
+#include "ergo/mesh/tet_boundary.h"
+
+namespace ergo {
+namespace {
+
+double SignedTetVolume(const Vertices& v, const Eigen::RowVector4i& tet) {
+  const Eigen::Vector3d p0 = v.row(tet[0]);
+  return (Eigen::Vector3d(v.row(tet[1])) - p0)
+             .dot(
+                 (Eigen::Vector3d(v.row(tet[2])) - p0).cross(Eigen::Vector3d(v.row(tet[3])) - p0)) /
+         6.0;
+}
+
+// Volume, centroid and second moment ∫ x xᵀ dV (about the origin) of the solid bounded by
+// outward triangles, by the divergence theorem over tets (origin, a, b, c).
+struct SolidMoments {
+  double volume = 0;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+};
+
+SolidMoments Moments(const Vertices& v, const std::vector<Eigen::Vector3i>& faces,
+                     const Eigen::Vector3d& origin) {
+  SolidMoments m;
+  for (const Eigen::Vector3i& f : faces) {
+    const Eigen::Vector3d a = Eigen::Vector3d(v.row(f[0])) - origin;
+    const Eigen::Vector3d b = Eigen::Vector3d(v.row(f[1])) - origin;
+    const Eigen::Vector3d c = Eigen::Vector3d(v.row(f[2])) - origin;
+    const double volume = a.dot(b.cross(c)) / 6.0;
+    const Eigen::Vector3d s = a + b + c;
+    m.volume += volume;
+    m.first += volume * s / 4.0;
+    m.second += volume / 20.0 *
+                (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  return m;
+}
+
+// True when every undirected edge of `faces` is shared by exactly two faces.
+bool IsClosed(const std::vector<Eigen::Vector3i>& faces) {
+  std::map<std::pair<int, int>, int> count;
+  for (const Eigen::Vector3i& f : faces)
+    for (int k = 0; k < 3; ++k) ++count[std::minmax(f[k], f[(k + 1) % 3])];
+  for (const auto& [edge, n] : count)
+    if (n != 2) return false;
+  return !faces.empty();
+}
+
+}  // namespace
+
+TriMesh Skin::RestSurface(const Vertices& positions) const {
+  TriMesh mesh;
+  mesh.vertices.resize(vertices.size(), 3);
+  for (Eigen::Index i = 0; i < vertices.size(); ++i)
+    mesh.vertices.row(i) = positions.row(vertices[i]);
+  mesh.triangles.resize(triangles.rows(), 3);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) mesh.triangles(f, k) = local_of[triangles(f, k)];
+  return mesh;
+}
+
+LayeredBody LayeredBody::Create(TetMesh rest, std::vector<bool> attached, TissueMaterial material,
+                                const LayeredBodyOptions& options, const std::string& name) {
+  const Eigen::Index n = rest.vertices.rows(), tet_count = rest.tets.rows();
+  if (n == 0 || tet_count == 0)
+    throw InputError(name, "", "the tet mesh is empty", "build a body first");
+  if (static_cast<Eigen::Index>(attached.size()) != n) {
+    throw InputError(name, "",
+                     "the attached-vertex flags have " + std::to_string(attached.size()) +
+                         " entries for " + std::to_string(n) + " vertices",
+                     "give one flag per tet-mesh vertex");
+  }
+  if (material.youngs_modulus.size() != tet_count || material.poisson_ratio.size() != tet_count) {
+    throw InputError(
+        name, "",
+        "material arrays do not have one value per tet (" + std::to_string(tet_count) + " tets)",
+        "give Young's modulus and Poisson's ratio per tet");
+  }
+  for (Eigen::Index t = 0; t < tet_count; ++t) {
+    for (int k = 0; k < 4; ++k) {
+      if (rest.tets(t, k) < 0 || rest.tets(t, k) >= n) {
+        throw InputError(name, "tet " + std::to_string(t), "vertex index out of range",
+                         "repair the tet mesh");
+      }
+    }
+    const double E = material.youngs_modulus[t], nu = material.poisson_ratio[t];
+    if (!(E > 0) || !std::isfinite(E)) {
+      throw InputError(name, "tet " + std::to_string(t),
+                       "Young's modulus " + std::to_string(E) + " Pa is not positive",
+                       "give a positive stiffness (tissue: 5e3–15e3 Pa)");
+    }
+    if (!(nu > -1.0 && nu < 0.5)) {
+      throw InputError(name, "tet " + std::to_string(t),
+                       "Poisson's ratio " + std::to_string(nu) + " is outside (-1, 0.5)",
+                       "use a value such as 0.45 for nearly incompressible tissue");
+    }
+    if (!(SignedTetVolume(rest.vertices, rest.tets.row(t)) > 0)) {
+      throw InputError(name, "tet " + std::to_string(t),
+                       "rest volume is not positive (degenerate or inverted element)",
+                       "re-mesh the body or swap two vertices of inverted tets");
+    }
+  }
+  if (!(material.inversion_threshold > 0 && material.inversion_threshold < 1) ||
+      !(material.compression_resistance >= 0)) {
+    throw InputError(name, "",
+                     "inversion threshold must be in (0,1) and compression resistance >= 0",
+                     "use the defaults 0.1 and 1");
+  }
+  ValidateCoreLock(options.lock, name + " lock");
+
+  LayeredBody body;
+  body.options_ = options;
+  body.material_ = std::move(material);
+
+  std::vector<int> free_list, attached_list;
+  body.free_index_ = Eigen::VectorXi::Constant(n, -1);
+  for (Eigen::Index v = 0; v < n; ++v) {
+    if (attached[v]) {
+      attached_list.push_back(static_cast<int>(v));
+    } else {
+      body.free_index_[v] = static_cast<int>(free_list.size());
+      free_list.push_back(static_cast<int>(v));
+    }
+  }
+  if (attached_list.empty()) {
+    throw InputError(name, "", "no vertex is attached to the rigid core",
+                     "mark the inner-surface vertices as attached");
+  }
+  body.free_vertices_ = Eigen::Map<Eigen::VectorXi>(free_list.data(), free_list.size());
+  body.attached_vertices_ = Eigen::Map<Eigen::VectorXi>(attached_list.data(), attached_list.size());
+
+  // Lumped masses: a quarter of each tet's mass on each corner.
+  body.vertex_mass_ = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index t = 0; t < tet_count; ++t) {
+    const double volume = SignedTetVolume(rest.vertices, rest.tets.row(t));
+    body.layer_volume_ += volume;
+    for (int k = 0; k < 4; ++k)
+      body.vertex_mass_[rest.tets(t, k)] += options.tissue_density * volume / 4;
+  }
+
+  // Boundary: faces entirely on the core are the core interface, the rest is skin.
+  const TetBoundary boundary = ExtractBoundary(rest);
+  std::vector<Eigen::Vector3i> core_faces, skin_faces;
+  for (Eigen::Index f = 0; f < boundary.surface.triangles.rows(); ++f) {
+    Eigen::Vector3i face;
+    bool on_core = true;
+    for (int k = 0; k < 3; ++k) {
+      face[k] = boundary.surface_to_tet[boundary.surface.triangles(f, k)];
+      on_core = on_core && attached[face[k]];
+    }
+    if (on_core) {
+      // Outward from the layer means into the core: reverse for the core solid.
+      core_faces.emplace_back(face[0], face[2], face[1]);
+    } else {
+      skin_faces.push_back(face);
+    }
+  }
+  if (skin_faces.empty()) {
+    throw InputError(name, "", "every boundary face is on the core: the body has no skin",
+                     "attach only the inner surface's vertices");
+  }
+
+  // Core centre, volume and inertia from the closed core interface when there is one;
+  // otherwise the mass-weighted centroid of the attached vertices.
+  const Eigen::Vector3d reference = rest.vertices.colwise().mean().transpose();
+  if (IsClosed(core_faces)) {
+    const SolidMoments m = Moments(rest.vertices, core_faces, reference);
+    if (m.volume > 0) {
+      body.core_volume_ = m.volume;
+      const Eigen::Vector3d centroid = m.first / m.volume;
+      body.core_centre_ = reference + centroid;
+      const Eigen::Matrix3d central = m.second - m.volume * centroid * centroid.transpose();
+      body.core_inertia_ = central.trace() * Eigen::Matrix3d::Identity() - central;  // per density
+    }
+  }
+  if (body.core_volume_ == 0) {
+    double mass = 0;
+    Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+    for (int v : attached_list) {
+      mass += body.vertex_mass_[v];
+      weighted += body.vertex_mass_[v] * rest.vertices.row(v).transpose();
+    }
+    body.core_centre_ = weighted / mass;
+  }
+  if (options.core_mass >= 0) {
+    body.core_mass_ = options.core_mass;
+  } else if (body.core_volume_ > 0) {
+    body.core_mass_ = options.core_density * body.core_volume_;
+  } else {
+    throw InputError(name, "",
+                     "the attached vertices do not enclose a core, so its mass is unknown",
+                     "give the core mass explicitly (--core_mass)");
+  }
+  if (body.core_volume_ > 0) {
+    body.core_inertia_ *= body.core_mass_ / body.core_volume_;
+  } else {
+    // No solid to integrate: a ball of the core's mass with the attached vertices' spread.
+    double spread = 0;
+    for (int v : attached_list)
+      spread += (rest.vertices.row(v).transpose() - body.core_centre_).squaredNorm();
+    body.core_inertia_ = Eigen::Matrix3d::Identity() * (2.0 / 3.0) * body.core_mass_ * spread /
+                         static_cast<double>(attached_list.size());
+  }
+
+  // Skin: compact vertex list and rest barycentric areas.
+  Skin& skin = body.skin_;
+  skin.triangles.resize(static_cast<Eigen::Index>(skin_faces.size()), 3);
+  std::vector<int> skin_vertices;
+  for (size_t f = 0; f < skin_faces.size(); ++f) {
+    skin.triangles.row(f) = skin_faces[f].transpose();
+    for (int k = 0; k < 3; ++k) skin_vertices.push_back(skin_faces[f][k]);
+  }
+  std::sort(skin_vertices.begin(), skin_vertices.end());
+  skin_vertices.erase(std::unique(skin_vertices.begin(), skin_vertices.end()), skin_vertices.end());
+  skin.vertices = Eigen::Map<Eigen::VectorXi>(skin_vertices.data(), skin_vertices.size());
+  skin.local_of = Eigen::VectorXi::Constant(n, -1);
+  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i)
+    skin.local_of[skin.vertices[i]] = static_cast<int>(i);
+  skin.rest_areas = BarycentricVertexAreas(skin.RestSurface(rest.vertices));
+
+  body.rest_ = std::move(rest);
+  body.attached_ = std::move(attached);
+  return body;
+}
+
+Eigen::Vector3d LayeredBody::TotalLoad() const {
+  return total_mass() * options_.gravity + options_.external_force;
+}
+
+void LayeredBody::SetLock(const CoreLock& lock) {
+  ValidateCoreLock(lock, "lock");
+  options_.lock = lock;
+}
+
+void LayeredBody::SetExternalWrench(const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
+  options_.external_force = force;
+  options_.external_torque = torque;
+}
+
+}  // namespace ergo

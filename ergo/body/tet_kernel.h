@@ -1,0 +1,43 @@
+// Per-tet elastic energy, gradient and Hessian of the body's neo-Hookean tissue, through
+// ergo/material: the one place the body stage calls the material.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "ergo/body/layered_body.h"
+#include "ergo/material/neo_hookean.h"
+#include "ergo/material/tet_element.h"
+
+namespace ergo {
+
+// Rest data and material of every tet, precomputed once per body.
+class TetKernel {
+ public:
+  explicit TetKernel(const LayeredBody& body);
+
+  // Energy of tet t at corner positions x (columns = corners), J.
+  double Energy(Eigen::Index t, const TetPositions& x) const {
+    return ElementEnergy(materials_[t], rest_[t], x);
+  }
+  // Energy, gradient (12, corner-major, N) and Hessian (12 x 12, N/m) of tet t.
+  double EnergyGradientHessian(Eigen::Index t, const TetPositions& x, HessianKind kind,
+                               Vector12d* gradient, Matrix12d* hessian) const {
+    double energy;
+    EvaluateElement(materials_[t], rest_[t], x, kind, &energy, gradient, hessian);
+    return energy;
+  }
+  // Energy and gradient only.
+  double EnergyGradient(Eigen::Index t, const TetPositions& x, Vector12d* gradient) const {
+    double energy;
+    EvaluateElement(materials_[t], rest_[t], x, HessianKind::kExact, &energy, gradient, nullptr);
+    return energy;
+  }
+
+ private:
+  std::vector<TetRestData> rest_;
+  std::vector<NeoHookean> materials_;
+};
+
+}  // namespace ergo
