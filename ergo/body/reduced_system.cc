@@ -10,6 +10,9 @@
 namespace ergo {
 namespace {
 
+// Colours with fewer elements than this are assembled on one thread.
+constexpr size_t kMinParallelColour = 512;
+
 // Local corner pairs (a <= b) in a fixed order; kPair[a][b] is their slot.
 constexpr int kPairs[10][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {1, 1},
                                {1, 2}, {1, 3}, {2, 2}, {2, 3}, {3, 3}};
@@ -155,7 +158,7 @@ void ReducedSystem::ZeroHessian(SparseMatrix* hessian) const {
 double ReducedSystem::Energy(const BodyState& state, const Vertices& positions) const {
   const Tetrahedra& tets = body_.rest().tets;
   std::vector<double> element(static_cast<size_t>(tets.rows()));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (tets.rows() >= Eigen::Index(kMinParallelColour))
   for (Eigen::Index t = 0; t < tets.rows(); ++t)
     element[t] = kernel_.Energy(t, Corners(positions, tets.row(t)));
   double energy = 0;
@@ -186,7 +189,9 @@ void ReducedSystem::Evaluate(const BodyState& state, const Vertices& positions, 
   const int core_count = layout_.core_count();
 
   for (const std::vector<int>& colour : colours_) {
-#pragma omp parallel for schedule(static)
+    // A barrier per colour costs more than a small colour's work (badly so when the
+    // machine is busy): small colours run on one thread. The result does not change.
+#pragma omp parallel for schedule(static) if (colour.size() >= kMinParallelColour)
     for (size_t i = 0; i < colour.size(); ++i) {
       const int t = colour[i];
       const ElementPlan& plan = plans_[t];

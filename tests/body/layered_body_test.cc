@@ -5,7 +5,7 @@
 #include "ergo/body/core_lock.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/primitives.h"
-#include "tests/body/body_fixtures.h"
+#include "tests/support/body/body_fixtures.h"
 
 namespace ergo {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "ergo/body/body_state.h"
 #include "ergo/mesh/sparse_cholesky.h"
-#include "tests/body/body_fixtures.h"
+#include "tests/support/body/body_fixtures.h"
 #include "tests/support/finite_difference.h"
 
 namespace ergo {

@@ -1,4 +1,4 @@
-#include "tests/body/body_fixtures.h"
+#include "tests/support/body/body_fixtures.h"
 
 #include <vector>
 

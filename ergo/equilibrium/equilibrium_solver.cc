@@ -1,0 +1,227 @@
+#include "ergo/equilibrium/equilibrium_solver.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <glog/logging.h>
+
+#include "ergo/equilibrium/golden_section.h"
+
+namespace ergo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Trace of the diagonal of an upper-triangular compressed matrix.
+double DiagonalSum(const SparseMatrix& upper) {
+  double sum = 0;
+  for (int col = 0; col < upper.outerSize(); ++col) sum += upper.coeff(col, col);
+  return sum;
+}
+
+}  // namespace
+
+const char* EquilibriumStatusName(EquilibriumStatus status) {
+  switch (status) {
+    case EquilibriumStatus::kConverged:
+      return "converged";
+    case EquilibriumStatus::kIterationCap:
+      return "iteration cap";
+    case EquilibriumStatus::kLineSearchFailure:
+      return "line search failure";
+    case EquilibriumStatus::kNonFinite:
+      return "non-finite values";
+    case EquilibriumStatus::kNoContact:
+      return "no contact";
+    case EquilibriumStatus::kUnconstrained:
+      return "unconstrained core DOF";
+  }
+  return "unknown";
+}
+
+std::string EquilibriumResult::BriefReport() const {
+  std::ostringstream out;
+  out << EquilibriumStatusName(status) << ": " << iterations << " Newton iterations, residual "
+      << residual << " N (" << relative_residual << " of the load), " << contact_vertices
+      << " contact vertices, max penetration " << max_penetration * 1e3 << " mm, " << total_seconds
+      << " s";
+  if (!converged) out << " — " << message;
+  return out.str();
+}
+
+std::string EquilibriumResult::FullReport() const {
+  std::ostringstream out;
+  out << BriefReport() << "\n"
+      << "  energy " << energy << " J, contact force (" << contact_force.transpose() << ") N\n"
+      << "  time: assembly " << assembly_seconds << " s, contact " << contact_seconds
+      << " s, factorisation " << factorization_seconds << " s, line search " << line_search_seconds
+      << " s, total " << total_seconds << " s";
+  return out.str();
+}
+
+EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options)
+    : body_(body), options_(options), potential_(body, options.contact_stiffness) {
+  CHECK_GT(options.relative_tolerance, 0.0);
+  CHECK_GE(options.max_iterations, 1);
+  CHECK_GT(options.free_fall_mass_scale, 0.0);
+  cholesky_.Analyze(potential_.system().pattern());
+}
+
+void EquilibriumSolver::set_contact_stiffness(double k) {
+  options_.contact_stiffness = k;
+  potential_.set_contact_stiffness(k);
+}
+
+std::string EquilibriumSolver::UnconstrainedTranslations(
+    const TotalPotential::Evaluation& evaluation) const {
+  // A rigid translation e moves every vertex by e; elasticity does not resist it, so its
+  // stiffness is Σ eᵀ H_c e over the contact springs' point blocks.
+  const ReducedLayout& layout = potential_.system().layout();
+  double total = 0;
+  Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
+  for (const Contact& contact : evaluation.contacts.contacts) {
+    stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
+  }
+  total = stiffness.trace();
+  std::string free;
+  constexpr const char* kNames[3] = {"tx", "ty", "tz"};
+  for (int component : layout.core_components()) {
+    if (component >= 3) continue;
+    if (stiffness(component, component) <= 1e-9 * total) {
+      if (!free.empty()) free += ", ";
+      free += kNames[component];
+    }
+  }
+  if (free.empty()) return "";
+  return "the core translation " + free +
+         " is free but every contact normal is perpendicular to it, so nothing resists "
+         "sliding (frictionless contact); lock it (e.g. --lock=" +
+         free + ")";
+}
+
+bool EquilibriumSolver::FellPastSupport(const Vertices& positions, const Support& support) const {
+  const Eigen::Vector3d load = body_.TotalLoad();
+  if (load.norm() == 0) return false;
+  const Eigen::Vector3d down = load.normalized();
+  const double body_top = (positions * down).minCoeff();
+  const double support_bottom = (support.mesh().vertices * down).maxCoeff();
+  return body_top > support_bottom;
+}
+
+EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodyState& start) {
+  const Clock::time_point begin = Clock::now();
+  EquilibriumResult result;
+  result.state = start;
+  BodyState& state = result.state;
+  const Eigen::Index vertex_count = body_.rest().vertices.rows();
+  if (static_cast<Eigen::Index>(hints_.size()) != vertex_count)
+    hints_.assign(vertex_count, SupportPoint());
+  const ReducedSystem& system = potential_.system();
+  const double load = body_.TotalLoad().norm();
+  const double tolerance = options_.relative_tolerance * (load > 0 ? load : 1.0);
+  // Energy differences below this are round-off (the gravity potential dominates |E|).
+  const double energy_scale =
+      body_.total_mass() * body_.gravity().norm() * potential_.lever_length() +
+      body_.options().external_force.norm() * potential_.lever_length();
+
+  TotalPotential::Evaluation e;
+  auto finish = [&](EquilibriumStatus status, const std::string& message) {
+    result.status = status;
+    result.converged = status == EquilibriumStatus::kConverged;
+    result.message = message;
+    result.total_seconds = SecondsSince(begin);
+    return result;
+  };
+  for (int iteration = 0;; ++iteration) {
+    potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_, &e);
+    result.assembly_seconds += e.assembly_seconds;
+    result.contact_seconds += e.contact_seconds;
+    result.iterations = iteration;
+    result.residual = potential_.ResidualNorm(e.gradient);
+    result.relative_residual = result.residual / (load > 0 ? load : 1.0);
+    result.energy = e.energy;
+    result.contact_vertices = e.contacts.size();
+    result.max_penetration = e.contacts.max_penetration;
+    result.contact_force = e.contacts.TotalForce();
+    if (!std::isfinite(result.residual) || !std::isfinite(e.energy)) {
+      return finish(EquilibriumStatus::kNonFinite,
+                    "the energy or residual is not finite (an element inverted beyond repair, or "
+                    "a non-finite input)");
+    }
+    // A free core DOF without stiffness makes the equilibrium non-unique (and K̂ singular
+    // for the adjoint) even when its residual happens to vanish: check before accepting.
+    if (e.contacts.size() > 0) {
+      const std::string unconstrained = UnconstrainedTranslations(e);
+      if (!unconstrained.empty()) return finish(EquilibriumStatus::kUnconstrained, unconstrained);
+    }
+    if (result.residual <= tolerance) return finish(EquilibriumStatus::kConverged, "converged");
+    if (iteration == options_.max_iterations) {
+      return finish(EquilibriumStatus::kIterationCap,
+                    "no convergence in " + std::to_string(iteration) + " Newton iterations");
+    }
+    const bool in_contact = e.contacts.size() > 0;
+    if (!in_contact) {
+      if (FellPastSupport(e.positions, support)) {
+        return finish(EquilibriumStatus::kNoContact,
+                      "no contact: the body fell past the support without touching it; place it "
+                      "above the support (along the load) or check the support's position");
+      }
+      system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &e.body.hessian);
+    }
+
+    // Newton step; a singular K̂ (e.g. a free rotation not yet resisted) is regularised
+    // with a growing multiple of the mass matrix.
+    Clock::time_point start_factor = Clock::now();
+    FactorizationStatus factor = cholesky_.Factorize(e.body.hessian);
+    if (!factor.ok) {
+      SparseMatrix mass = system.pattern();
+      system.AddScaledMass(1.0, state, e.positions, &mass);
+      double shift = 1e-10 * DiagonalSum(e.body.hessian) / DiagonalSum(mass);
+      for (int attempt = 0; attempt < 10 && !factor.ok; ++attempt, shift *= 100) {
+        SparseMatrix shifted = e.body.hessian;
+        system.AddScaledMass(shift, state, e.positions, &shifted);
+        factor = cholesky_.Factorize(shifted);
+      }
+      if (!factor.ok) {
+        result.factorization_seconds += SecondsSince(start_factor);
+        return finish(EquilibriumStatus::kNonFinite,
+                      "the Newton matrix could not be factorised: " + factor.message);
+      }
+    }
+    const Eigen::VectorXd step = -cholesky_.Solve(e.gradient);
+    result.factorization_seconds += SecondsSince(start_factor);
+    const double slope = e.gradient.dot(step);
+    if (!step.allFinite() || !(slope < 0)) {
+      return finish(EquilibriumStatus::kNonFinite,
+                    "the Newton step is not finite or not a descent direction");
+    }
+
+    const Clock::time_point start_search = Clock::now();
+    const double energy0 = e.energy;
+    auto phi = [&](double eta) {
+      return potential_.Energy(system.layout().Retract(state, eta * step), support, &hints_) -
+             energy0;
+    };
+    GoldenSectionOptions search;
+    search.expand = !in_contact;
+    search.max_evaluations = options_.max_line_search_evaluations;
+    search.noise = 1e-12 * (std::abs(energy0) + energy_scale);
+    const GoldenSectionResult found = GoldenSectionSearch(phi, slope, search);
+    result.line_search_seconds += SecondsSince(start_search);
+    if (found.step == 0) {
+      return finish(EquilibriumStatus::kLineSearchFailure,
+                    "no step length along the Newton direction lowered the energy (residual " +
+                        std::to_string(result.residual) + " N)");
+    }
+    state = system.layout().Retract(state, found.step * step);
+    if (options_.progress)
+      options_.progress(iteration, result.residual, found.step, result.contact_vertices);
+  }
+}
+
+}  // namespace ergo

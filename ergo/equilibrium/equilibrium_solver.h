@@ -1,0 +1,97 @@
+// EquilibriumSolver: the static contact equilibrium of a layered body on a rigid support
+// (paper §3.3–3.4): Newton–Raphson on the reduced coordinates y = (u^F, q) with the
+// PSD-projected Hessian K̂ (Eq. 7), factorised by CHOLMOD (symbolic analysis once per body,
+// numeric refactorisation per step), a golden-section line search on the energy of Eq. 9
+// with collision detection at every trial point, and K̂ + αM while no vertex touches the
+// support. Converges on the force residual relative to the load (weight + external force).
+//
+//   EquilibriumSolver solver(body, options);
+//   EquilibriumResult result = solver.Solve(support, TranslatedRestState(body, lift));
+//   if (!result.converged) LOG(ERROR) << result.BriefReport();
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ergo/body/body_state.h"
+#include "ergo/contact/support.h"
+#include "ergo/equilibrium/total_potential.h"
+#include "ergo/mesh/sparse_cholesky.h"
+
+namespace ergo {
+
+struct EquilibriumOptions {
+  double contact_stiffness = 1e4;  // k of Eq. 10, N/m
+  // Converged when ResidualNorm ≤ relative_tolerance · |weight + external force|.
+  double relative_tolerance = 1e-8;
+  int max_iterations = 100;
+  // α of "K + αM" while nothing touches the support, 1/s² (paper: 1e3 chair, 1e6 shoe,
+  // 1e4 mouse). Each free-fall step then moves the body about |g|/α (before the line
+  // search's expansion).
+  double free_fall_mass_scale = 1e3;
+  int max_line_search_evaluations = 30;
+  // Called after every Newton iteration (iteration, residual N, step η, contacts).
+  std::function<void(int, double, double, int)> progress;
+};
+
+enum class EquilibriumStatus {
+  kConverged,
+  kIterationCap,       // max_iterations reached
+  kLineSearchFailure,  // no step length decreased the energy
+  kNonFinite,          // NaN or Inf in the energy, residual or step
+  kNoContact,          // the body fell past the support without touching it
+  kUnconstrained,      // a free core DOF meets no resistance (e.g. sliding on a plane)
+};
+
+const char* EquilibriumStatusName(EquilibriumStatus status);
+
+struct EquilibriumResult {
+  BodyState state;
+  bool converged = false;
+  EquilibriumStatus status = EquilibriumStatus::kIterationCap;
+  std::string message;  // why it stopped, in words
+  int iterations = 0;   // Newton iterations (factorisations of the Newton matrix)
+  double residual = 0;  // final ResidualNorm, N
+  double relative_residual = 0;
+  double energy = 0;  // J
+  int contact_vertices = 0;
+  double max_penetration = 0;                               // m
+  Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();  // Σ contact forces on the body, N
+  // Seconds spent, by part.
+  double assembly_seconds = 0, contact_seconds = 0, factorization_seconds = 0,
+         line_search_seconds = 0, total_seconds = 0;
+
+  std::string BriefReport() const;  // one line
+  std::string FullReport() const;   // several lines with the time split
+};
+
+class EquilibriumSolver {
+ public:
+  // Keeps a reference to `body`. Analyses the Hessian pattern once (CHOLMOD symbolic).
+  EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options);
+
+  // Solves from `start` (warm start: any earlier state, even for another support shape).
+  EquilibriumResult Solve(const Support& support, const BodyState& start);
+
+  const TotalPotential& potential() const { return potential_; }
+  const EquilibriumOptions& options() const { return options_; }
+  void set_contact_stiffness(double k);
+
+  // Per tet-mesh-vertex anchors of the last solve (closest-point hints for the next).
+  std::vector<SupportPoint>& hints() { return hints_; }
+
+ private:
+  // A message naming the free core DOFs (translations perpendicular to every contact
+  // normal) along which the contacts give no stiffness, or "" if there is none.
+  std::string UnconstrainedTranslations(const TotalPotential::Evaluation& evaluation) const;
+  bool FellPastSupport(const Vertices& positions, const Support& support) const;
+
+  const LayeredBody& body_;
+  EquilibriumOptions options_;
+  TotalPotential potential_;
+  SparseCholesky cholesky_;
+  std::vector<SupportPoint> hints_;
+};
+
+}  // namespace ergo

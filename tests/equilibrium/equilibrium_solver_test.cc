@@ -1,0 +1,186 @@
+// The Newton equilibrium against answers known without the code: force and moment balance,
+// a tilt that balances an off-centre load, agreement with an independent minimiser
+// (Ceres L-BFGS), calibration of the penalty stiffness, and honest failure reports.
+#include "ergo/equilibrium/equilibrium_solver.h"
+
+#include <cmath>
+#include <iostream>
+
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include "ergo/body/core_lock.h"
+#include "ergo/contact/stiffness_calibration.h"
+#include "ergo/equilibrium/ceres_equilibrium.h"
+#include "ergo/mesh/primitives.h"
+#include "tests/support/body/body_fixtures.h"
+
+namespace ergo {
+namespace {
+
+// A 10 cm hollow cube of 10 kPa tissue (≈ 1 kg) and a 40 cm x 40 cm slab whose top is y = 0.
+LayeredBody CubeBody(const std::string& lock,
+                     const Eigen::Vector3d& force = Eigen::Vector3d::Zero(),
+                     const Eigen::Vector3d& torque = Eigen::Vector3d::Zero()) {
+  LayeredBodyOptions options;
+  options.lock = ParseCoreLock(lock);
+  options.external_force = force;
+  options.external_torque = torque;
+  return testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options, Eigen::Vector3d(0, 0.05, 0));
+}
+
+Support FlatSupport(double top = 0.0) {
+  return Support(MakeBox({-0.2, top - 0.1, -0.2}, {0.2, top, 0.2}, {4, 1, 4}), "flat slab");
+}
+
+EquilibriumOptions Options(double k = 2e3) {
+  EquilibriumOptions options;
+  options.contact_stiffness = k;
+  return options;
+}
+
+// Σ over vertices of (x − c) × (force on the vertex), plus the external torque: the net
+// moment about the core centre of everything acting on the body.
+Eigen::Vector3d NetMoment(const LayeredBody& body, const EquilibriumSolver& solver,
+                          const EquilibriumResult& result, const Support& support) {
+  TotalPotential::Evaluation e;
+  solver.potential().Evaluate(result.state, support, HessianKind::kExact, false, nullptr, &e);
+  const Eigen::Vector3d c = result.state.centre;
+  Eigen::Vector3d moment = body.options().external_torque;
+  for (const Contact& contact : e.contacts.contacts)
+    moment += (e.positions.row(contact.point).transpose() - c).cross(contact.force());
+  for (Eigen::Index v = 0; v < e.positions.rows(); ++v)
+    moment += (e.positions.row(v).transpose() - c).cross(body.vertex_mass()[v] * body.gravity());
+  return moment;
+}
+
+TEST(Equilibrium, ContactForceBalancesTheLoadAndMomentsBalanceAboutTheCore) {
+  const LayeredBody body = CubeBody("tx,tz", Eigen::Vector3d(0, -5, 0));
+  const Support support = FlatSupport();
+  EquilibriumSolver solver(body, Options());
+  const EquilibriumResult result = solver.Solve(support, TranslatedRestState(body, {0, 0.002, 0}));
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  // The residual is ≤ 1e-8 of the load; the force balance holds to that order.
+  const Eigen::Vector3d load = body.TotalLoad();
+  EXPECT_LT((result.contact_force + load).norm(), 1e-6 * load.norm()) << result.FullReport();
+  const double lever = 0.05;
+  EXPECT_LT(NetMoment(body, solver, result, support).norm(), 1e-6 * load.norm() * lever);
+  EXPECT_GT(result.contact_vertices, 0);
+  EXPECT_GT(result.max_penetration, 0);
+}
+
+TEST(Equilibrium, AnOffCentreForceTiltsTheBodyUntilTheContactMomentBalancesIt) {
+  // 20 N pushing down 2 cm right of the core centre: τ = r × F = (0, 0, −0.4) N·m.
+  const Eigen::Vector3d force(0, -20, 0), arm(0.02, 0, 0);
+  const LayeredBody body = CubeBody("tx,tz,rx,ry", force, arm.cross(force));
+  const Support support = FlatSupport();
+  EquilibriumSolver solver(body, Options());
+  const EquilibriumResult result = solver.Solve(support, TranslatedRestState(body, {0, 0.002, 0}));
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  // Pitch about z, right side down: a negative rotation angle about z.
+  const double angle = Eigen::AngleAxisd(result.state.rotation).angle() *
+                       Eigen::AngleAxisd(result.state.rotation).axis().z();
+  EXPECT_LT(angle, -1e-3);
+  EXPECT_LT(std::abs(NetMoment(body, solver, result, support).z()),
+            1e-6 * body.TotalLoad().norm() * 0.05);
+  // The centre of pressure moved right of the core centre.
+  TotalPotential::Evaluation e;
+  solver.potential().Evaluate(result.state, support, HessianKind::kExact, false, nullptr, &e);
+  double weighted = 0, total = 0;
+  for (const Contact& contact : e.contacts.contacts) {
+    weighted += e.positions(contact.point, 0) * contact.force().y();
+    total += contact.force().y();
+  }
+  EXPECT_GT(weighted / total, result.state.centre.x() + 0.005);
+}
+
+TEST(Equilibrium, NewtonAndCeresLbfgsReachTheSameEquilibrium) {
+  const LayeredBody body = CubeBody("tx,tz");
+  const Support support = FlatSupport();
+  EquilibriumSolver solver(body, Options());
+  const EquilibriumResult newton = solver.Solve(support, TranslatedRestState(body, {0, 0.001, 0}));
+  ASSERT_TRUE(newton.converged) << newton.FullReport();
+  // L-BFGS from a nearby contact state (not from free fall, where it would crawl).
+  BodyState start = newton.state;
+  start.centre.y() += 2e-4;
+  start.free_displacement.array() += 1e-4;
+  ceres::GradientProblemSolver::Options options;
+  options.line_search_direction_type = ceres::LBFGS;
+  options.max_num_iterations = 20000;
+  options.function_tolerance = 1e-16;
+  options.gradient_tolerance = 1e-13;
+  options.parameter_tolerance = 1e-16;
+  const EquilibriumResult lbfgs =
+      SolveEquilibriumWithCeres(solver.potential(), support, start, 1e-8, options);
+  const Vertices a = DeformedPositions(body, newton.state),
+                 b = DeformedPositions(body, lbfgs.state);
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-6) << lbfgs.BriefReport() << " / " << lbfgs.message;
+}
+
+TEST(Equilibrium, CalibrationHitsThreeTenthsOfAMillimetrePenetration) {
+  const LayeredBody body = CubeBody("tx,tz");
+  const Support support = FlatSupport();
+  EquilibriumSolver solver(body, Options());
+  BodyState warm = TranslatedRestState(body, {0, 0.001, 0});
+  auto penetration_at = [&](double k) -> std::optional<double> {
+    solver.set_contact_stiffness(k);
+    const EquilibriumResult r = solver.Solve(support, warm);
+    if (!r.converged) return std::nullopt;
+    warm = r.state;
+    return r.max_penetration;
+  };
+  const CalibrationResult calibration = CalibrateStiffness(penetration_at, 3e-4);
+  ASSERT_TRUE(calibration.converged) << calibration.BriefReport();
+  EXPECT_NEAR(calibration.penetration, 3e-4, 3e-5) << calibration.BriefReport();
+  // Re-solving with the calibrated k reproduces the penetration.
+  solver.set_contact_stiffness(calibration.stiffness);
+  EXPECT_NEAR(solver.Solve(support, warm).max_penetration, 3e-4, 3e-5);
+}
+
+TEST(Equilibrium, ABodyThatNeverMeetsTheSupportEndsWithANoContactReport) {
+  const LayeredBody body = CubeBody("tx,tz");
+  const Support beside = Support(MakeBox({1, -0.1, 1}, {1.4, 0, 1.4}, {2, 1, 2}), "slab aside");
+  EquilibriumSolver solver(body, Options());
+  const EquilibriumResult result = solver.Solve(beside, TranslatedRestState(body, {0, 0.01, 0}));
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.status, EquilibriumStatus::kNoContact) << result.FullReport();
+  EXPECT_NE(result.message.find("no contact"), std::string::npos);
+  EXPECT_LT(result.iterations, 20);
+}
+
+TEST(Equilibrium, FreeHorizontalTranslationOnAFlatSupportIsRefusedWithItsCause) {
+  const LayeredBody body = CubeBody("none");
+  const Support support = FlatSupport();
+  EquilibriumSolver solver(body, Options());
+  const EquilibriumResult result = solver.Solve(support, TranslatedRestState(body, {0, 0.001, 0}));
+  EXPECT_EQ(result.status, EquilibriumStatus::kUnconstrained) << result.FullReport();
+  EXPECT_NE(result.message.find("tx, tz"), std::string::npos) << result.message;
+}
+
+TEST(Equilibrium, WarmStartAfterATenthOfAMillimetreSupportChangeNeedsFewIterations) {
+  const LayeredBody body = CubeBody("tx,tz");
+  EquilibriumSolver solver(body, Options());
+  const EquilibriumResult cold =
+      solver.Solve(FlatSupport(), TranslatedRestState(body, {0, 0.001, 0}));
+  ASSERT_TRUE(cold.converged);
+  const EquilibriumResult warm = solver.Solve(FlatSupport(1e-4), cold.state);
+  ASSERT_TRUE(warm.converged) << warm.FullReport();
+  EXPECT_LE(warm.iterations, 6);
+  EXPECT_LT(warm.iterations, cold.iterations);
+  EXPECT_NEAR(warm.state.centre.y() - cold.state.centre.y(), 1e-4, 1e-6);
+}
+
+TEST(Equilibrium, AnIterationCapIsReportedNotHidden) {
+  const LayeredBody body = CubeBody("tx,tz");
+  EquilibriumOptions options = Options();
+  options.max_iterations = 2;
+  EquilibriumSolver solver(body, options);
+  const EquilibriumResult result =
+      solver.Solve(FlatSupport(), TranslatedRestState(body, {0, 0.01, 0}));
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.status, EquilibriumStatus::kIterationCap);
+  EXPECT_NE(result.BriefReport().find("iteration cap"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ergo
