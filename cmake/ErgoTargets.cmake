@@ -2,14 +2,14 @@
 # so `ctest -R Stage` runs one stage and a broken stage does not stop the others building.
 
 # ergo_stage_library(NAME DEPENDS dep...): a static library from every .cc in the
-# current folder (and its subfolders), named ergo_NAME.
+# current folder (and its subfolders), named ergo_NAME_lib (the tools own the plain names).
 function(ergo_stage_library name)
   cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cc)
-  add_library(ergo_${name} STATIC ${sources})
-  target_include_directories(ergo_${name} PUBLIC ${PROJECT_SOURCE_DIR})
-  target_link_libraries(ergo_${name} PUBLIC ${ARG_DEPENDS})
-  set_target_properties(ergo_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  add_library(ergo_${name}_lib STATIC ${sources})
+  target_include_directories(ergo_${name}_lib PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(ergo_${name}_lib PUBLIC ${ARG_DEPENDS})
+  set_target_properties(ergo_${name}_lib PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endfunction()
 
 # ergo_stage_tests(NAME LIBS lib...): one GoogleTest binary from tests/NAME/*.cc,
