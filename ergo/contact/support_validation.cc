@@ -1,0 +1,162 @@
+#include "ergo/contact/support_validation.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "ergo/mesh/input_error.h"
+
+namespace ergo {
+namespace {
+
+std::uint64_t Key(int from, int to) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) |
+         static_cast<std::uint32_t>(to);
+}
+
+std::string EdgeName(int a, int b) {
+  return "edge (" + std::to_string(std::min(a, b)) + ", " + std::to_string(std::max(a, b)) + ")";
+}
+
+}  // namespace
+
+void ValidateSupportMesh(const TriMesh& mesh, const std::string& source) {
+  const Eigen::Index num_vertices = mesh.vertices.rows();
+  const Eigen::Index num_triangles = mesh.triangles.rows();
+  if (num_triangles < 4) {
+    throw InputError(source, "",
+                     "the support has " + std::to_string(num_triangles) +
+                         " triangles; a closed surface needs at least 4",
+                     "pass a closed triangle mesh that encloses the support's volume");
+  }
+  for (Eigen::Index v = 0; v < num_vertices; ++v) {
+    if (!mesh.vertices.row(v).allFinite()) {
+      throw InputError(source, "vertex " + std::to_string(v), "non-finite coordinate",
+                       "check the file for NaN or infinite values");
+    }
+  }
+
+  // Per triangle: valid, distinct vertex ids and a non-degenerate shape.
+  for (Eigen::Index f = 0; f < num_triangles; ++f) {
+    const std::string where = "triangle " + std::to_string(f);
+    for (int c = 0; c < 3; ++c) {
+      const int v = mesh.triangles(f, c);
+      if (v < 0 || v >= num_vertices) {
+        throw InputError(source, where,
+                         "vertex id " + std::to_string(v) + " is out of range [0, " +
+                             std::to_string(num_vertices) + ")",
+                         "fix the triangle's vertex ids");
+      }
+    }
+    const int a = mesh.triangles(f, 0), b = mesh.triangles(f, 1), c = mesh.triangles(f, 2);
+    if (a == b || b == c || c == a) {
+      throw InputError(source, where, "degenerate triangle: a vertex id is repeated",
+                       "remove the triangle (and close the surface around it)");
+    }
+    const Eigen::Vector3d xa = mesh.vertices.row(a), xb = mesh.vertices.row(b),
+                          xc = mesh.vertices.row(c);
+    const double longest2 =
+        std::max({(xb - xa).squaredNorm(), (xc - xb).squaredNorm(), (xa - xc).squaredNorm()});
+    if (!((xb - xa).cross(xc - xa).norm() > kDegenerateTriangleRatio * longest2)) {
+      throw InputError(source, where,
+                       "degenerate triangle: zero area (its vertices are coincident or "
+                       "collinear), so it has no normal",
+                       "collapse or remove the triangle (and close the surface around it)");
+    }
+  }
+
+  // Edges: each undirected edge must join exactly two triangles traversing it in
+  // opposite directions (closed, edge-manifold, consistently oriented).
+  std::unordered_map<std::uint64_t, std::vector<int>> incident;  // directed edge -> triangles
+  incident.reserve(3 * num_triangles);
+  for (Eigen::Index f = 0; f < num_triangles; ++f) {
+    for (int c = 0; c < 3; ++c) {
+      incident[Key(mesh.triangles(f, c), mesh.triangles(f, (c + 1) % 3))].push_back(
+          static_cast<int>(f));
+    }
+  }
+  for (Eigen::Index f = 0; f < num_triangles; ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const int from = mesh.triangles(f, c), to = mesh.triangles(f, (c + 1) % 3);
+      const std::vector<int>& same = incident[Key(from, to)];
+      const auto reverse = incident.find(Key(to, from));
+      const std::size_t opposite = reverse == incident.end() ? 0 : reverse->second.size();
+      if (same.size() + opposite > 2) {
+        throw InputError(
+            source, EdgeName(from, to),
+            "non-manifold edge: shared by " + std::to_string(same.size() + opposite) + " triangles",
+            "make the surface 2-manifold: every edge must join exactly two "
+            "triangles");
+      }
+      if (same.size() == 2) {
+        throw InputError(source, EdgeName(from, to),
+                         "inconsistent orientation: triangles " + std::to_string(same[0]) +
+                             " and " + std::to_string(same[1]) + " both traverse it from vertex " +
+                             std::to_string(from) + " to " + std::to_string(to),
+                         "orient every triangle counter-clockwise seen from outside (flip one of "
+                         "the two)");
+      }
+      if (opposite == 0) {
+        throw InputError(source, EdgeName(from, to),
+                         "open support: only triangle " + std::to_string(f) +
+                             " uses this edge, so the surface has a hole and encloses no volume",
+                         "close the surface so that every edge joins exactly two triangles");
+      }
+    }
+  }
+
+  // Vertices: the triangles around each vertex must form a single fan (no pinch points),
+  // otherwise "inside" is ambiguous there. Walk the fan across edges and count.
+  std::vector<int> valence(num_vertices, 0), first_corner(num_vertices, -1);
+  for (Eigen::Index f = 0; f < num_triangles; ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const int v = mesh.triangles(f, c);
+      ++valence[v];
+      if (first_corner[v] < 0) first_corner[v] = static_cast<int>(3 * f + c);
+    }
+  }
+  for (Eigen::Index v = 0; v < num_vertices; ++v) {
+    if (valence[v] == 0) continue;  // an unused vertex is harmless
+    int corner = first_corner[v];
+    int walked = 0;
+    do {
+      const int f = corner / 3, c = corner % 3;
+      const int next = mesh.triangles(f, (c + 1) % 3);
+      // The triangle across the outgoing edge (v, next) traverses it as (next, v).
+      const int g = incident[Key(next, static_cast<int>(v))].front();
+      int cg = 0;
+      while (mesh.triangles(g, cg) != v) ++cg;
+      corner = 3 * g + cg;
+      ++walked;
+    } while (corner != first_corner[v] && walked <= valence[v]);
+    if (walked != valence[v]) {
+      throw InputError(source, "vertex " + std::to_string(v),
+                       "non-manifold vertex: its " + std::to_string(valence[v]) +
+                           " triangles form more than one fan (the surface pinches there)",
+                       "give each sheet of the surface its own copy of the vertex, or separate "
+                       "the sheets");
+    }
+  }
+
+  // Orientation: counter-clockwise seen from outside encloses a positive volume.
+  double volume = 0;
+  for (Eigen::Index f = 0; f < num_triangles; ++f) {
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
+    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
+    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
+    volume += a.dot(b.cross(c)) / 6;
+  }
+  if (!(volume > 0)) {
+    std::ostringstream what;
+    what << "inside-out support: the enclosed volume is " << volume
+         << " m^3 (not positive), i.e. the triangles are clockwise seen from outside";
+    throw InputError(source, "", what.str(), "reverse the vertex order of every triangle");
+  }
+}
+
+}  // namespace ergo

@@ -1,0 +1,21 @@
+// The checks a support surface S must pass before contact can use it (paper §3.5: a vertex
+// collides with "the volume enclosed by the supporting surface", so S must enclose one):
+// closed, edge- and vertex-manifold, consistently and outward oriented, no degenerate
+// triangles, finite coordinates. Self-intersection is not checked here.
+#pragma once
+
+#include <string>
+
+#include "ergo/mesh/tri_mesh.h"
+
+namespace ergo {
+
+// Twice a triangle's area over its longest edge squared at or below this is "degenerate"
+// (collinear to rounding): its normal, needed for the inside test, does not exist.
+inline constexpr double kDegenerateTriangleRatio = 1e-12;
+
+// Throws InputError naming `source` (a file or a description), the offending triangle /
+// edge / vertex, what is wrong and the fix. Returns normally if `mesh` can be a support.
+void ValidateSupportMesh(const TriMesh& mesh, const std::string& source);
+
+}  // namespace ergo
