@@ -23,10 +23,15 @@ TriangleProjection ClosestPointOnTriangle(const Eigen::Vector3d& p, const Eigen:
   // only those can hold the closest boundary point of a convex polygon.
   bool outside[3] = {true, true, true};
   if (h > kSliverRatio * kSliverRatio * longest2 * longest2) {
-    // Face interior iff the projection of p lies strictly inside every edge: the signed
-    // areas normal·(edge_i × (p − x_i)) are h × the barycentric coordinates.
-    for (int i = 0; i < 3; ++i) outside[i] = !(normal.dot(edge[i].cross(offset[i])) > 0);
-    if (!outside[0] && !outside[1] && !outside[2]) {
+    // The signed areas normal·(edge_i × (p − x_i)) are h × the barycentric coordinates of
+    // the projection; the face region is closed, with kRegionTolerance of slack.
+    double area[3];
+    for (int i = 0; i < 3; ++i) {
+      area[i] = normal.dot(edge[i].cross(offset[i]));
+      outside[i] = area[i] < 0;
+    }
+    const double slack = -kRegionTolerance * h;
+    if (area[0] >= slack && area[1] >= slack && area[2] >= slack) {
       const double g = normal.dot(offset[0]);
       result.point = p - (g / h) * normal;
       result.squared_distance = g * g / h;
@@ -36,7 +41,8 @@ TriangleProjection ClosestPointOnTriangle(const Eigen::Vector3d& p, const Eigen:
     }
   }
 
-  // Outside the face region (or a sliver): the nearest of the candidate closed segments.
+  // Outside the face region (or a sliver): the nearest of the candidate segments, each
+  // closed towards its vertices with kRegionTolerance of slack on its parameter.
   result.squared_distance = std::numeric_limits<double>::infinity();
   const double short2 = kShortEdgeRatio * kShortEdgeRatio * longest2;
   for (int i = 0; i < 3; ++i) {
@@ -45,11 +51,10 @@ TriangleProjection ClosestPointOnTriangle(const Eigen::Vector3d& p, const Eigen:
     Eigen::Vector3d q;
     FeatureType type;
     int index;
-    double t = 0;
-    if (length2[i] > short2) t = offset[i].dot(edge[i]) / length2[i];
-    if (t <= 0) {
+    const double t = length2[i] > short2 ? offset[i].dot(edge[i]) / length2[i] : 0.0;
+    if (length2[i] <= short2 || t < -kRegionTolerance) {
       q = *x[i], type = FeatureType::kVertex, index = i;
-    } else if (t >= 1) {
+    } else if (t > 1 + kRegionTolerance) {
       q = *x[j], type = FeatureType::kVertex, index = j;
     } else {
       q = *x[i] + t * edge[i], type = FeatureType::kEdge, index = i;

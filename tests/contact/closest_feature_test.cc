@@ -48,40 +48,51 @@ TEST(Contact, TriangleClassificationFindsEachConstructedRegion) {
   }
 }
 
-TEST(Contact, TriangleClassificationOfQueriesOnVerticesAndEdges) {
+TEST(Contact, TriangleClassificationBreaksTiesTowardsTheHigherDimensionalFeature) {
   const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  // Exactly at a vertex: that vertex, distance 0.
+  // Exactly at a vertex or on an edge, in the plane or off it: the face (closed face
+  // region), at the exact distance.
   const Vector3d corners[3] = {a, b, c};
-  for (int i = 0; i < 3; ++i) {
-    const TriangleProjection q = ClosestPointOnTriangle(corners[i], a, b, c);
-    EXPECT_EQ(q.type, FeatureType::kVertex);
-    EXPECT_EQ(q.index, i);
-    EXPECT_EQ(q.squared_distance, 0.0);
-  }
-  // Exactly on an edge (representable midpoints): the edge (closed edge regions win over
-  // the open face region), also above/below the edge.
   for (double z : {0.0, 0.5, -0.5}) {
-    TriangleProjection q = ClosestPointOnTriangle(Vector3d(0.5, 0, z), a, b, c);
-    EXPECT_EQ(q.type, FeatureType::kEdge);
-    EXPECT_EQ(q.index, 0);
-    EXPECT_EQ(q.squared_distance, z * z);
-    q = ClosestPointOnTriangle(Vector3d(0.5, 0.5, z), a, b, c);
-    EXPECT_EQ(q.type, FeatureType::kEdge);
-    EXPECT_EQ(q.index, 1);
-    q = ClosestPointOnTriangle(Vector3d(0, 0.25, z), a, b, c);
-    EXPECT_EQ(q.type, FeatureType::kEdge);
-    EXPECT_EQ(q.index, 2);
+    for (int i = 0; i < 3; ++i) {
+      const TriangleProjection q = ClosestPointOnTriangle(corners[i] + Vector3d(0, 0, z), a, b, c);
+      EXPECT_EQ(q.type, FeatureType::kFace);
+      EXPECT_EQ(q.squared_distance, z * z);
+      EXPECT_EQ(q.point, corners[i]);
+    }
+    for (const Vector3d& on_edge :
+         {Vector3d(0.5, 0, z), Vector3d(0.5, 0.5, z), Vector3d(0, 0.25, z)}) {
+      const TriangleProjection q = ClosestPointOnTriangle(on_edge, a, b, c);
+      EXPECT_EQ(q.type, FeatureType::kFace);
+      EXPECT_EQ(q.squared_distance, z * z);
+    }
   }
-  // On the edge/vertex boundary plane: the vertex (t clamps to 0).
+  // Outside edge 0 on the plane through vertex 0 perpendicular to it: the edge (closed
+  // towards its vertices), anchored at the vertex.
   TriangleProjection q = ClosestPointOnTriangle(Vector3d(0, -1, 0.3), a, b, c);
+  EXPECT_EQ(q.type, FeatureType::kEdge);
+  EXPECT_EQ(q.index, 0);
+  EXPECT_EQ(q.point, a);
+  // Strictly inside the vertex region: the vertex.
+  q = ClosestPointOnTriangle(Vector3d(-1, -1, 0.3), a, b, c);
   EXPECT_EQ(q.type, FeatureType::kVertex);
   EXPECT_EQ(q.index, 0);
+  // Strictly outside an edge: the edge.
+  q = ClosestPointOnTriangle(Vector3d(0.5, -0.5, 0.3), a, b, c);
+  EXPECT_EQ(q.type, FeatureType::kEdge);
+  EXPECT_EQ(q.index, 0);
+  // Rounding-level excursions outside the face (1e-15 of the size) still report the face;
+  // clear ones (1e-9) do not.
+  EXPECT_EQ(ClosestPointOnTriangle(Vector3d(0.5, -1e-15, 0.3), a, b, c).type, FeatureType::kFace);
+  EXPECT_EQ(ClosestPointOnTriangle(Vector3d(0.5, -1e-9, 0.3), a, b, c).type, FeatureType::kEdge);
+  EXPECT_EQ(ClosestPointOnTriangle(Vector3d(-1e-15, -1, 0.3), a, b, c).type, FeatureType::kEdge);
+  EXPECT_EQ(ClosestPointOnTriangle(Vector3d(-1e-9, -1, 0.3), a, b, c).type, FeatureType::kVertex);
   // Same answer on repetition (no hidden state).
   for (int repeat = 0; repeat < 3; ++repeat) {
     const TriangleProjection again = ClosestPointOnTriangle(Vector3d(0, -1, 0.3), a, b, c);
-    EXPECT_EQ(again.type, q.type);
-    EXPECT_EQ(again.index, q.index);
-    EXPECT_EQ(again.point, q.point);
+    EXPECT_EQ(again.type, FeatureType::kEdge);
+    EXPECT_EQ(again.index, 0);
+    EXPECT_EQ(again.point, a);
   }
 }
 

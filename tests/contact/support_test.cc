@@ -333,6 +333,11 @@ TEST(Contact, FeaturePositionsFollowTheFeatureOrder) {
 
 // ---- Degenerate queries ----
 
+bool FaceHas(const Feature& feature, int v) {
+  return feature.type == FeatureType::kFace &&
+         std::count(feature.vertices.begin(), feature.vertices.end(), v) > 0;
+}
+
 TEST(Contact, QueriesExactlyOnVerticesAndEdgesAreDeterministic) {
   const TriMesh sphere = MakeIcosphere(0.2, 2);
   const Support support(sphere);
@@ -341,8 +346,11 @@ TEST(Contact, QueriesExactlyOnVerticesAndEdgesAreDeterministic) {
   for (int v = 0; v < sphere.vertices.rows(); v += 7) {
     const Vector3d p = sphere.vertices.row(v);
     const SupportPoint s = support.ClosestPoint(p);
-    EXPECT_EQ(s.feature, Feature::Vertex(v));
+    // Exactly at a vertex: every incident triangle reports its (closed) face at distance 0;
+    // the smallest triangle id wins.
+    EXPECT_TRUE(FaceHas(s.feature, v)) << s.feature;
     EXPECT_EQ(s.squared_distance, 0.0);
+    EXPECT_EQ(s.point, p);
     EXPECT_FALSE(s.inside);  // on S counts as outside
     EXPECT_FALSE(support.Contains(p));
     EXPECT_FALSE(support.Penetration(p).has_value());
@@ -351,6 +359,7 @@ TEST(Contact, QueriesExactlyOnVerticesAndEdgesAreDeterministic) {
       SupportPoint hint;
       hint.triangle = pick(rng);
       EXPECT_EQ(support.ClosestPoint(p, &hint).feature, s.feature);
+      EXPECT_EQ(support.ClosestPoint(p, &hint).triangle, s.triangle);
     }
   }
   for (int f = 0; f < sphere.triangles.rows(); f += 5) {
@@ -359,12 +368,10 @@ TEST(Contact, QueriesExactlyOnVerticesAndEdgesAreDeterministic) {
     const SupportPoint s = support.ClosestPoint(p);
     EXPECT_TRUE(s.point.allFinite());
     EXPECT_LE(s.squared_distance, 1e-30);
-    // On the edge up to the rounding of the midpoint: the edge or one of its two faces.
-    const bool on_edge = s.feature == Feature::Edge(a, b);
-    const bool on_face = s.feature.type == FeatureType::kFace &&
-                         std::count(s.feature.vertices.begin(), s.feature.vertices.end(), a) &&
-                         std::count(s.feature.vertices.begin(), s.feature.vertices.end(), b);
-    EXPECT_TRUE(on_edge || on_face) << s.feature;
+    // On the edge up to the rounding of the midpoint: one of its two faces (or the edge).
+    EXPECT_TRUE(s.feature == Feature::Edge(a, b) ||
+                (FaceHas(s.feature, a) && FaceHas(s.feature, b)))
+        << s.feature;
     for (int h = 0; h < 5; ++h) {
       SupportPoint hint;
       hint.triangle = pick(rng);
@@ -387,13 +394,34 @@ TEST(Contact, CoplanarNeighboursGiveTheirSharedPlane) {
       EXPECT_NEAR(s.squared_distance, 0.0625, 1e-15) << p.transpose();
       EXPECT_TRUE(s.inside);
       EXPECT_LT((s.point - Vector3d(x, y, 1.0)).norm(), 1e-15);
+      // The plane formula (no spurious tangential spring over the grid's edges and vertices,
+      // whose Voronoi regions have zero thickness between coplanar triangles).
+      EXPECT_EQ(s.feature.type, FeatureType::kFace) << p.transpose() << " " << s.feature;
       const SupportPoint again = support.ClosestPoint(p);
       EXPECT_EQ(again.feature, s.feature);
-      // Whatever the feature, its formula gives the plane distance.
       EXPECT_NEAR(
           EvaluateSlidingAnchor(s.feature.type, p, support.Positions(s.feature), 1.0).energy,
           0.0625, 1e-15);
     }
+  }
+}
+
+TEST(Contact, StraightCreasesGiveTheirLine) {
+  // Outside a box edge split into four collinear segments, exactly beside a split vertex
+  // (whose own region is a zero-thickness slab): the edge, i.e. the line formula.
+  const TriMesh box = MakeBox(Vector3d(0, 0, 0), Vector3d(1, 1, 1), Eigen::Vector3i(4, 4, 4));
+  const Support support(box);
+  for (double x : {0.25, 0.5, 0.75, 0.375}) {
+    const Vector3d p(x, -0.3, -0.4);
+    const SupportPoint s = support.ClosestPoint(p);
+    EXPECT_EQ(s.feature.type, FeatureType::kEdge) << x << " " << s.feature;
+    EXPECT_NEAR(s.squared_distance, 0.25, 1e-15);
+    EXPECT_FALSE(s.inside);
+    const SlidingAnchorEnergy e =
+        EvaluateSlidingAnchor(s.feature.type, p, support.Positions(s.feature), 1.0);
+    EXPECT_NEAR(e.energy, 0.25, 1e-15);
+    // No stiffness along the crease (x).
+    EXPECT_NEAR(e.hessian(0, 0), 0.0, 1e-12);
   }
 }
 
