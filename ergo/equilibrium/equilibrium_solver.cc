@@ -48,8 +48,8 @@ std::string EquilibriumResult::BriefReport() const {
   std::ostringstream out;
   out << EquilibriumStatusName(status) << ": " << iterations << " Newton iterations, residual "
       << residual << " N (" << relative_residual << " of the load), " << contact_vertices
-      << " contact vertices, max penetration " << max_penetration * 1e3 << " mm, " << total_seconds
-      << " s";
+      << " contact vertices (" << projected_steps << " projected steps), max penetration "
+      << max_penetration * 1e3 << " mm, " << total_seconds << " s";
   if (!converged) out << " — " << message;
   return out.str();
 }
@@ -70,6 +70,28 @@ EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumO
   CHECK_GE(options.max_iterations, 1);
   CHECK_GT(options.free_fall_mass_scale, 0.0);
   cholesky_.Analyze(potential_.system().pattern());
+  const Vertices& rest = body.rest().vertices;
+  body_size_ = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+}
+
+FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& state,
+                                                             const Vertices& positions,
+                                                             bool free_fall,
+                                                             SparseMatrix* hessian) {
+  const ReducedSystem& system = potential_.system();
+  if (free_fall) system.AddScaledMass(options_.free_fall_mass_scale, state, positions, hessian);
+  FactorizationStatus factor = cholesky_.Factorize(*hessian);
+  if (factor.ok) return factor;
+  // Singular (e.g. a rotation not yet resisted): regularise with a growing multiple of M.
+  SparseMatrix mass = system.pattern();
+  system.AddScaledMass(1.0, state, positions, &mass);
+  double shift = 1e-10 * DiagonalSum(*hessian) / DiagonalSum(mass);
+  for (int attempt = 0; attempt < 10 && !factor.ok; ++attempt, shift *= 100) {
+    SparseMatrix shifted = *hessian;
+    system.AddScaledMass(shift, state, positions, &shifted);
+    factor = cholesky_.Factorize(shifted);
+  }
+  return factor;
 }
 
 void EquilibriumSolver::set_contact_stiffness(double k) {
@@ -138,7 +160,9 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     return result;
   };
   for (int iteration = 0;; ++iteration) {
-    potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_, &e);
+    const HessianKind first_kind =
+        options_.exact_newton_first ? HessianKind::kExact : HessianKind::kProjectedPsd;
+    potential_.Evaluate(state, support, first_kind, true, &hints_, &e);
     result.assembly_seconds += e.assembly_seconds;
     result.contact_seconds += e.contact_seconds;
     result.iterations = iteration;
@@ -165,36 +189,50 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                     "no convergence in " + std::to_string(iteration) + " Newton iterations");
     }
     const bool in_contact = e.contacts.size() > 0;
-    if (!in_contact) {
-      if (FellPastSupport(e.positions, support)) {
-        return finish(EquilibriumStatus::kNoContact,
-                      "no contact: the body fell past the support without touching it; place it "
-                      "above the support (along the load) or check the support's position");
-      }
-      system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &e.body.hessian);
+    if (!in_contact && FellPastSupport(e.positions, support)) {
+      return finish(EquilibriumStatus::kNoContact,
+                    "no contact: the body fell past the support without touching it; place it "
+                    "above the support (along the load) or check the support's position");
     }
 
-    // Newton step; a singular K̂ (e.g. a free rotation not yet resisted) is regularised
-    // with a growing multiple of the mass matrix.
-    Clock::time_point start_factor = Clock::now();
-    FactorizationStatus factor = cholesky_.Factorize(e.body.hessian);
-    if (!factor.ok) {
-      SparseMatrix mass = system.pattern();
-      system.AddScaledMass(1.0, state, e.positions, &mass);
-      double shift = 1e-10 * DiagonalSum(e.body.hessian) / DiagonalSum(mass);
-      for (int attempt = 0; attempt < 10 && !factor.ok; ++attempt, shift *= 100) {
-        SparseMatrix shifted = e.body.hessian;
-        system.AddScaledMass(shift, state, e.positions, &shifted);
-        factor = cholesky_.Factorize(shifted);
+    // Newton matrix: exact K̂ if positive definite, else the PSD projection.
+    const Clock::time_point start_factor = Clock::now();
+    bool exact_ok = false;
+    if (first_kind == HessianKind::kExact) {
+      SparseMatrix exact = e.body.hessian;
+      if (!in_contact)
+        system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &exact);
+      exact_ok = cholesky_.Factorize(exact).ok;
+    }
+    if (!exact_ok) {
+      result.factorization_seconds += SecondsSince(start_factor);
+      if (first_kind == HessianKind::kExact) {
+        ++result.projected_steps;
+        TotalPotential::Evaluation projected;
+        potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_, &projected);
+        result.assembly_seconds += projected.assembly_seconds;
+        result.contact_seconds += projected.contact_seconds;
+        e.body.hessian.swap(projected.body.hessian);
       }
+      const Clock::time_point start_projected = Clock::now();
+      const FactorizationStatus factor =
+          FactorizeNewtonMatrix(state, e.positions, !in_contact, &e.body.hessian);
+      result.factorization_seconds += SecondsSince(start_projected);
       if (!factor.ok) {
-        result.factorization_seconds += SecondsSince(start_factor);
         return finish(EquilibriumStatus::kNonFinite,
                       "the Newton matrix could not be factorised: " + factor.message);
       }
+    } else {
+      result.factorization_seconds += SecondsSince(start_factor);
     }
-    const Eigen::VectorXd step = -cholesky_.Solve(e.gradient);
-    result.factorization_seconds += SecondsSince(start_factor);
+    const Clock::time_point start_solve = Clock::now();
+    Eigen::VectorXd step = -cholesky_.Solve(e.gradient);
+    result.factorization_seconds += SecondsSince(start_solve);
+    // Shorten steps that would move a vertex farther than the cap (nearly free modes).
+    const double cap = options_.max_step_fraction * body_size_;
+    const double largest =
+        system.layout().VertexVelocity(body_, state, e.positions, step).rowwise().norm().maxCoeff();
+    if (in_contact && largest > cap) step *= cap / largest;
     const double slope = e.gradient.dot(step);
     if (!step.allFinite() || !(slope < 0)) {
       return finish(EquilibriumStatus::kNonFinite,

@@ -111,6 +111,22 @@ TriMesh MakeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
   return FromLists(points, faces);
 }
 
+TriMesh MakeHeightfieldBlock(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                             const Eigen::Vector3i& cells,
+                             const std::function<double(double, double)>& height) {
+  TriMesh block = MakeBox(lo, hi, cells);
+  const double depth = hi.y() - lo.y();
+  for (Eigen::Index v = 0; v < block.vertices.rows(); ++v) {
+    const double x = block.vertices(v, 0), z = block.vertices(v, 2);
+    const double top = hi.y() + height(x, z);
+    CHECK_GT(top, lo.y()) << "height field reaches below the block's bottom at (" << x << ", " << z
+                          << ")";
+    // Stretch every column linearly so the walls follow the top.
+    block.vertices(v, 1) = lo.y() + (block.vertices(v, 1) - lo.y()) / depth * (top - lo.y());
+  }
+  return block;
+}
+
 TriMesh MakeTorus(double major, double minor, int major_segments, int minor_segments) {
   CHECK_GT(major, minor);
   CHECK_GT(minor, 0.0);

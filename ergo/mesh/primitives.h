@@ -3,6 +3,8 @@
 // (surfaces) or positively oriented (tets), coordinates in metres.
 #pragma once
 
+#include <functional>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -18,6 +20,13 @@ TriMesh MakeIcosphere(double radius, int subdivisions,
 // Surface of the axis-aligned box [lo, hi], each face split into a grid of
 // cells(axis) x cells(other axis) squares, two triangles each.
 TriMesh MakeBox(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const Eigen::Vector3i& cells);
+
+// A box [lo, hi] (cells as in MakeBox) whose top face y = hi.y is raised by
+// height(x, z) (metres, may be negative but must keep the top above lo.y); the side walls
+// are stretched vertically to follow. For supports: bumps, bowls, troughs.
+TriMesh MakeHeightfieldBlock(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                             const Eigen::Vector3i& cells,
+                             const std::function<double(double, double)>& height);
 
 // Torus around the z axis: tube radius `minor` swept on a circle of radius `major`.
 TriMesh MakeTorus(double major, double minor, int major_segments, int minor_segments);

@@ -3,8 +3,8 @@
 #include <map>
 #include <utility>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 namespace ergo {
 namespace {
@@ -25,8 +25,7 @@ double EnclosedVolume(const TriMesh& mesh) {
 bool ClosedAndOriented(const TriMesh& mesh) {
   std::map<std::pair<int, int>, int> directed;
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f)
-    for (int e = 0; e < 3; ++e)
-      ++directed[{mesh.triangles(f, e), mesh.triangles(f, (e + 1) % 3)}];
+    for (int e = 0; e < 3; ++e) ++directed[{mesh.triangles(f, e), mesh.triangles(f, (e + 1) % 3)}];
   for (const auto& [edge, count] : directed) {
     if (count != 1) return false;
     auto reverse = directed.find({edge.second, edge.first});
@@ -67,14 +66,35 @@ TEST(Mesh, TetGridTetsArePositiveAndFillTheBox) {
   double total = 0;
   for (Eigen::Index t = 0; t < grid.tets.rows(); ++t) {
     const Eigen::Vector3d p0 = grid.vertices.row(grid.tets(t, 0));
-    const double v = (Eigen::Vector3d(grid.vertices.row(grid.tets(t, 1))) - p0)
-                         .dot((Eigen::Vector3d(grid.vertices.row(grid.tets(t, 2))) - p0)
-                                  .cross(Eigen::Vector3d(grid.vertices.row(grid.tets(t, 3))) - p0)) /
-                     6.0;
+    const double v =
+        (Eigen::Vector3d(grid.vertices.row(grid.tets(t, 1))) - p0)
+            .dot((Eigen::Vector3d(grid.vertices.row(grid.tets(t, 2))) - p0)
+                     .cross(Eigen::Vector3d(grid.vertices.row(grid.tets(t, 3))) - p0)) /
+        6.0;
     EXPECT_GT(v, 0);
     total += v;
   }
   EXPECT_NEAR(total, 6.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace ergo
+
+namespace ergo {
+namespace {
+
+TEST(Mesh, HeightfieldBlockRaisesTheTopAndStaysClosed) {
+  const auto bump = [](double x, double z) { return 0.01 * std::exp(-(x * x + z * z) / 0.01); };
+  const TriMesh block = MakeHeightfieldBlock({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {8, 2, 8}, bump);
+  EXPECT_TRUE(ClosedAndOriented(block));
+  double top = -1;
+  for (Eigen::Index v = 0; v < block.vertices.rows(); ++v)
+    top = std::max(top, block.vertices(v, 1));
+  EXPECT_NEAR(top, 0.01, 1e-15);  // the grid has a vertex at the bump's centre
+  // Volume grows by the integral of the bump over the top (sampled): positive and small.
+  const double added = EnclosedVolume(block) - 0.4 * 0.1 * 0.4;
+  EXPECT_GT(added, 0);
+  EXPECT_LT(added, 0.01 * M_PI * 0.01);  // below the exact Gaussian integral π w² h
 }
 
 }  // namespace

@@ -7,7 +7,8 @@
 namespace ergo::testing {
 
 LayeredBody MakeHollowCubeBody(double size, int cells, double youngs_modulus, double poisson_ratio,
-                               const LayeredBodyOptions& options, const Eigen::Vector3d& centre) {
+                               const LayeredBodyOptions& options, const Eigen::Vector3d& centre,
+                               const Eigen::Matrix3d& orientation) {
   const Eigen::Vector3d half = Eigen::Vector3d::Constant(size / 2);
   const TetMesh grid = MakeTetGrid(centre - half, centre + half, Eigen::Vector3i::Constant(cells));
   const double lo = -size / 6, hi = size / 6;  // the middle third is the core
@@ -34,6 +35,10 @@ LayeredBody MakeHollowCubeBody(double size, int cells, double youngs_modulus, do
   material.poisson_ratio = Eigen::VectorXd::Constant(layer.tets.rows(), poisson_ratio);
   // Vertices strictly inside the core are unused by any tet; they stay as attached,
   // massless vertices (harmless: they move with the core).
+  for (Eigen::Index v = 0; v < layer.vertices.rows(); ++v) {
+    layer.vertices.row(v) =
+        (centre + orientation * (layer.vertices.row(v).transpose() - centre)).transpose();
+  }
   return LayeredBody::Create(layer, attached, material, options, "hollow cube");
 }
 

@@ -1,0 +1,248 @@
+#include "ergo/design/design_problem.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <glog/logging.h>
+
+#include "ergo/mesh/surface_geometry.h"
+
+namespace ergo {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Skin vertex positions in skin order, from all tet-mesh vertex positions.
+Vertices SkinPositions(const Skin& skin, const Vertices& positions) {
+  Vertices out(skin.vertices.size(), 3);
+  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i)
+    out.row(i) = positions.row(skin.vertices[i]);
+  return out;
+}
+
+// −(f/‖f‖)ᵀ ∂f/∂(spring variables)... with f = −∂E/∂p: ∂‖f‖/∂z = −(f/‖f‖)ᵀ H[0:3, :].
+Eigen::Matrix<double, 1, 12> ForceMagnitudeGradient(const Contact& contact) {
+  const Eigen::Vector3d f = contact.force();
+  const double magnitude = f.norm();
+  if (magnitude == 0) return Eigen::Matrix<double, 1, 12>::Zero();
+  return -(f / magnitude).transpose() * contact.spring.hessian.topRows<3>();
+}
+
+}  // namespace
+
+DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
+                             const BodyState& start, const DesignOptions& options)
+    : body_(body),
+      options_(options),
+      initial_support_(support),
+      parameterization_(support, options.active, options.parameterization),
+      support_laplacian_(UmbrellaLaplacian(support.triangles, support.vertices.rows())),
+      skin_laplacian_(UmbrellaLaplacian(body.skin().RestSurface(body.rest().vertices).triangles,
+                                        body.skin().vertices.size())),
+      support_(support, "support"),
+      skin_(body.skin().RestSurface(body.rest().vertices), "body skin"),
+      solver_(body, options.equilibrium),
+      last_state_(start),
+      counters_(std::make_shared<DesignCounters>()) {
+  adjoint_cholesky_.Analyze(solver_.potential().system().pattern());
+}
+
+DesignProblem::DesignProblem(const DesignProblem& other)
+    : body_(other.body_),
+      options_(other.options_),
+      initial_support_(other.initial_support_),
+      parameterization_(other.parameterization_),
+      support_laplacian_(other.support_laplacian_),
+      skin_laplacian_(other.skin_laplacian_),
+      support_(other.initial_support_, "support"),
+      skin_(body_.skin().RestSurface(body_.rest().vertices), "body skin"),
+      solver_(other.solver_),
+      adjoint_cholesky_(other.adjoint_cholesky_),
+      last_state_(other.last_state_),
+      cache_(other.cache_),
+      counters_(other.counters_) {
+  support_.UpdateVertices(other.support_.mesh().vertices);
+}
+
+void DesignProblem::set_contact_stiffness(double k) {
+  options_.equilibrium.contact_stiffness = k;
+  solver_.set_contact_stiffness(k);
+}
+
+TriMesh DesignProblem::SupportAt(const Eigen::VectorXd& x) const {
+  return TriMesh{parameterization_.Positions(x), initial_support_.triangles};
+}
+
+BodyState DesignProblem::WarmStart(const Eigen::VectorXd& x) const {
+  const BodyState* best = &last_state_;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [cached_x, state] : cache_) {
+    const double distance = (cached_x - x).lpNorm<Eigen::Infinity>();
+    if (distance < nearest) {
+      nearest = distance;
+      best = &state;
+    }
+  }
+  return *best;
+}
+
+void DesignProblem::Remember(const Eigen::VectorXd& x, const BodyState& state) {
+  if (options_.warm_start_cache <= 0) return;
+  if (static_cast<int>(cache_.size()) >= options_.warm_start_cache) cache_.erase(cache_.begin());
+  cache_.emplace_back(x, state);
+}
+
+DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gradient) {
+  const Clock::time_point begin = Clock::now();
+  DesignEvaluation out;
+  CHECK_EQ(x.size(), NumParameters());
+  auto fail = [&](const std::string& message) {
+    out.ok = false;
+    out.message = message;
+    ++counters_->failures;
+    out.seconds = SecondsSince(begin);
+    counters_->nanoseconds += static_cast<long>(1e9 * out.seconds);
+    return out;
+  };
+  ++counters_->evaluations;
+  if (!x.allFinite()) return fail("the design vector has non-finite entries");
+
+  // Equilibrium on the support at x (Eq. 7–9).
+  const Vertices support_positions = parameterization_.Positions(x);
+  support_.UpdateVertices(support_positions);
+  out.equilibrium = solver_.Solve(support_, WarmStart(x));
+  counters_->newton_iterations += out.equilibrium.iterations;
+  if (!out.equilibrium.converged)
+    return fail("equilibrium failed: " + out.equilibrium.BriefReport());
+  const BodyState& state = out.equilibrium.state;
+  Remember(x, state);
+  last_state_ = state;
+
+  // The contact forces the solver used, and the exact K̂ at y* for the adjoint.
+  const TotalPotential& potential = solver_.potential();
+  TotalPotential::Evaluation e;
+  potential.Evaluate(state, support_, HessianKind::kExact, with_gradient, &solver_.hints(), &e);
+
+  // Human side (Eq. 12): each skin vertex's own spring.
+  const Skin& skin = body_.skin();
+  Eigen::VectorXd human_force = Eigen::VectorXd::Zero(skin.vertices.size());
+  for (const Contact& contact : e.contacts.contacts)
+    human_force[skin.local_of[contact.point]] = contact.force().norm();
+  out.human =
+      EvaluateSurfacePressure(human_force, skin.rest_areas, skin_laplacian_, options_.pressure);
+
+  // Support side: support vertices inside the deformed skin (bi-directional, Fig. 4).
+  skin_.UpdateVertices(SkinPositions(skin, e.positions));
+  const auto support_count = static_cast<int>(support_positions.rows());
+  const ContactSet reverse = EvaluateContacts(
+      skin_, support_positions, Eigen::VectorXi::LinSpaced(support_count, 0, support_count - 1),
+      potential.contact_stiffness(), with_gradient);
+  const TriMesh support_mesh{support_positions, initial_support_.triangles};
+  out.support_areas = BarycentricVertexAreas(support_mesh);
+  Eigen::VectorXd support_force = Eigen::VectorXd::Zero(support_count);
+  for (const Contact& contact : reverse.contacts)
+    support_force[contact.point] = contact.force().norm();
+  out.support = EvaluateSurfacePressure(support_force, out.support_areas, support_laplacian_,
+                                        options_.pressure);
+
+  const SmoothnessValue psi =
+      EvaluateSmoothness(support_positions, support_laplacian_, options_.taubin);
+  out.zeta_human = out.human.cost;
+  out.zeta_support = out.support.cost;
+  out.zeta = out.zeta_human + out.zeta_support;
+  out.psi = psi.value;
+  out.phi = out.zeta + options_.gamma * out.psi;
+  if (!std::isfinite(out.phi)) return fail("the objective is not finite");
+
+  if (with_gradient) {
+    const Clock::time_point adjoint_begin = Clock::now();
+    Vertices d_body = Vertices::Zero(e.positions.rows(), 3);  // ∂ζ/∂(tet-mesh positions)
+    Vertices d_support = Vertices::Zero(support_count, 3);    // ∂ζ/∂X, explicit part
+    for (const Contact& contact : e.contacts.contacts) {
+      const double weight = out.human.d_force_magnitude[skin.local_of[contact.point]];
+      if (weight == 0) continue;
+      const Eigen::Matrix<double, 1, 12> row = weight * ForceMagnitudeGradient(contact);
+      d_body.row(contact.point) += row.segment<3>(0);
+      for (int k = 0; k < contact.anchor.feature.size(); ++k)
+        d_support.row(contact.anchor.feature.vertices[k]) += row.segment<3>(3 + 3 * k);
+    }
+    for (const Contact& contact : reverse.contacts) {
+      const double weight = out.support.d_force_magnitude[contact.point];
+      if (weight == 0) continue;
+      const Eigen::Matrix<double, 1, 12> row = weight * ForceMagnitudeGradient(contact);
+      d_support.row(contact.point) += row.segment<3>(0);
+      for (int k = 0; k < contact.anchor.feature.size(); ++k)
+        d_body.row(skin.vertices[contact.anchor.feature.vertices[k]]) += row.segment<3>(3 + 3 * k);
+    }
+    // Support areas s_j(x): one third of each incident triangle.
+    for (Eigen::Index t = 0; t < support_mesh.triangles.rows(); ++t) {
+      const Eigen::RowVector3i tri = support_mesh.triangles.row(t);
+      const double weight =
+          (out.support.d_area[tri[0]] + out.support.d_area[tri[1]] + out.support.d_area[tri[2]]) /
+          3;
+      if (weight == 0) continue;
+      const Eigen::Matrix3d area_gradient =
+          TriangleAreaGradient(support_positions.row(tri[0]), support_positions.row(tri[1]),
+                               support_positions.row(tri[2]));
+      for (int k = 0; k < 3; ++k) d_support.row(tri[k]) += weight * area_gradient.row(k);
+    }
+
+    // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂X through the springs' cross blocks.
+    const Eigen::VectorXd rhs = potential.system().ReduceVertexGradient(state, e.positions, d_body);
+    if (rhs.squaredNorm() > 0) {
+      const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.body.hessian);
+      if (!factor.ok) {
+        return fail("the exact Hessian at the equilibrium is not positive definite (" +
+                    factor.message +
+                    "): the equilibrium is not a strict minimum, so dy/dx is undefined");
+      }
+      const Eigen::VectorXd z = adjoint_cholesky_.Solve(rhs);
+      const Vertices velocity =
+          potential.system().layout().VertexVelocity(body_, state, e.positions, z);
+      for (const Contact& contact : e.contacts.contacts) {
+        const Eigen::RowVector3d v = velocity.row(contact.point);
+        for (int k = 0; k < contact.anchor.feature.size(); ++k) {
+          d_support.row(contact.anchor.feature.vertices[k]) -=
+              v * contact.spring.hessian.block<3, 3>(0, 3 + 3 * k);
+        }
+      }
+    }
+    out.zeta_gradient = parameterization_.PullBack(d_support);
+    out.psi_gradient = parameterization_.PullBack(psi.gradient);
+    out.gradient = out.zeta_gradient + options_.gamma * out.psi_gradient;
+    ++counters_->gradients;
+    out.adjoint_seconds = SecondsSince(adjoint_begin);
+  }
+  out.ok = true;
+  out.message = "ok";
+  out.seconds = SecondsSince(begin);
+  counters_->nanoseconds += static_cast<long>(1e9 * out.seconds);
+  return out;
+}
+
+double AutoGamma(DesignProblem& problem, int power_of_ten, std::string* message) {
+  const DesignEvaluation at = problem.Evaluate(problem.InitialDesign(), false);
+  if (!at.ok) {
+    if (message) *message = "cannot choose γ automatically: " + at.message;
+    return -1;
+  }
+  if (!(at.psi > 0)) {
+    if (message)
+      *message =
+          "cannot choose γ automatically: ψ(x₀) = 0 (the initial support is Taubin-invariant); "
+          "give γ explicitly";
+    return -1;
+  }
+  const double kappa = at.zeta / at.psi;
+  if (message)
+    *message = "γ = κ·10^" + std::to_string(power_of_ten) +
+               " with κ = ζ(x₀)/ψ(x₀) = " + std::to_string(kappa);
+  return kappa * std::pow(10.0, power_of_ten);
+}
+
+}  // namespace ergo

@@ -1,0 +1,121 @@
+// DesignProblem: the design objective of paper §4, x ↦ φ(x) = ζ(x) + γ ψ(x), and its exact
+// gradient by the implicit function theorem (Eq. 17–20): solve the equilibrium y*(x)
+// (warm-started from the nearest earlier state), then one adjoint solve K̂ z = (∂ζ/∂y)ᵀ with
+// the exact Hessian at y*, and dφ/dx = ∂ζ/∂x − zᵀ ∂G/∂x + γ ∂ψ/∂x, where G = ∂E/∂y is the
+// equilibrium residual and ζ sums the bi-directional pressures of the skin (its own
+// springs) and of the support (springs of support vertices inside the deformed skin).
+//
+// Copies are independent (own support trees, solver and warm-start cache) and share the
+// evaluation counters, so an optimiser can probe several designs in parallel threads.
+//
+//   DesignProblem problem(body, support_mesh, start_state, options);
+//   DesignEvaluation e = problem.Evaluate(problem.InitialDesign(), /*with_gradient=*/true);
+//   if (!e.ok) LOG(ERROR) << e.message;   // the equilibrium did not converge
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "ergo/body/layered_body.h"
+#include "ergo/contact/support.h"
+#include "ergo/design/support_parameterization.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/ergonomics/pressure_cost.h"
+#include "ergo/ergonomics/smoothness_term.h"
+#include "ergo/mesh/sparse_cholesky.h"
+
+namespace ergo {
+
+struct DesignOptions {
+  EquilibriumOptions equilibrium;
+  PressureCostOptions pressure;            // exponent e, smoothing λ_p
+  TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
+  double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
+  DesignParameterization parameterization = DesignParameterization::kPositions;
+  std::vector<bool> active;   // movable support vertices; empty = all
+  int warm_start_cache = 16;  // equilibria kept for warm starts
+};
+
+struct DesignEvaluation {
+  bool ok = false;
+  std::string message;  // why not ok (the equilibrium's report), or "ok"
+  double phi = 0, zeta = 0, psi = 0;
+  double zeta_human = 0, zeta_support = 0;
+  Eigen::VectorXd gradient;       // dφ/dx (when requested)
+  Eigen::VectorXd zeta_gradient;  // dζ/dx
+  Eigen::VectorXd psi_gradient;   // dψ/dx
+  EquilibriumResult equilibrium;
+  SurfacePressure human;          // per skin vertex (LayeredBody::skin() order)
+  SurfacePressure support;        // per support vertex
+  Eigen::VectorXd support_areas;  // barycentric support areas at x, m²
+  double seconds = 0;             // this evaluation, wall
+  double adjoint_seconds = 0;     // the gradient part
+};
+
+// Evaluation counts shared by a problem and all its copies.
+struct DesignCounters {
+  std::atomic<long> evaluations{0};
+  std::atomic<long> gradients{0};
+  std::atomic<long> failures{0};
+  std::atomic<long> newton_iterations{0};
+  std::atomic<long> nanoseconds{0};
+  double seconds() const { return 1e-9 * static_cast<double>(nanoseconds.load()); }
+};
+
+class DesignProblem {
+ public:
+  // Keeps a reference to `body`. `start` places the body for the first solve (e.g. a rest
+  // state lifted above the support). Throws InputError for an unusable support mesh.
+  DesignProblem(const LayeredBody& body, const TriMesh& support, const BodyState& start,
+                const DesignOptions& options);
+  DesignProblem(const DesignProblem& other);
+  DesignProblem& operator=(const DesignProblem&) = delete;
+
+  int NumParameters() const { return parameterization_.size(); }
+  Eigen::VectorXd InitialDesign() const { return parameterization_.InitialDesign(); }
+  const SupportParameterization& parameterization() const { return parameterization_; }
+  const LayeredBody& body() const { return body_; }
+  const DesignOptions& options() const { return options_; }
+  const TriMesh& initial_support() const { return initial_support_; }
+  void set_gamma(double gamma) { options_.gamma = gamma; }
+  void set_contact_stiffness(double k);
+
+  // φ, ζ, ψ (and with_gradient: their gradients) at design x. Thread-compatible: one
+  // thread per copy.
+  DesignEvaluation Evaluate(const Eigen::VectorXd& x, bool with_gradient);
+
+  // The support surface at design x.
+  TriMesh SupportAt(const Eigen::VectorXd& x) const;
+
+  const DesignCounters& counters() const { return *counters_; }
+  // The most recent converged equilibrium state (for warm starts elsewhere).
+  const BodyState& last_state() const { return last_state_; }
+
+ private:
+  BodyState WarmStart(const Eigen::VectorXd& x) const;
+  void Remember(const Eigen::VectorXd& x, const BodyState& state);
+
+  const LayeredBody& body_;
+  DesignOptions options_;
+  TriMesh initial_support_;
+  SupportParameterization parameterization_;
+  SparseMatrix support_laplacian_, skin_laplacian_;
+  Support support_;  // the support at the current x
+  Support skin_;     // the body's skin, moved to the deformed positions
+  EquilibriumSolver solver_;
+  SparseCholesky adjoint_cholesky_;  // exact K̂ at y*, same pattern as Newton
+  BodyState last_state_;
+  std::vector<std::pair<Eigen::VectorXd, BodyState>> cache_;
+  std::shared_ptr<DesignCounters> counters_;
+};
+
+// γ = κ · 10^j with κ such that ζ(x₀) = κ ψ(x₀) (paper §4.1). Evaluates x₀ once; returns
+// a negative value with `message` set if ψ(x₀) = 0 or the evaluation fails.
+double AutoGamma(DesignProblem& problem, int power_of_ten, std::string* message);
+
+}  // namespace ergo
