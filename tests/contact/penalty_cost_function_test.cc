@@ -57,10 +57,18 @@ TEST(Contact, GradientCheckerPassesOnTheCostFunctionInEveryRegion) {
         for (int i = 0; i < n; ++i) parameters.push_back(x[i].data());
 
         ceres::GradientChecker checker(cost.get(), euclidean, numeric);
+#if defined(__SANITIZE_ADDRESS__)
+        // Under AddressSanitizer Eigen stops trusting malloc's alignment and frees with its
+        // own scheme, so ProbeResults, filled inside the (uninstrumented) Ceres library,
+        // cannot be destroyed here. Probe without it; the Release build prints the log.
+        EXPECT_TRUE(checker.Probe(parameters.data(), 1e-7, nullptr))
+            << RegionName(region) << " scale " << scale;
+#else
         ceres::GradientChecker::ProbeResults results;
         EXPECT_TRUE(checker.Probe(parameters.data(), 1e-7, &results))
             << RegionName(region) << " scale " << scale << "\n"
             << results.error_log;
+#endif
       }
     }
   }
