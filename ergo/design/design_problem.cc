@@ -17,14 +17,6 @@ double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Skin vertex positions in skin order, from all tet-mesh vertex positions.
-Vertices SkinPositions(const Skin& skin, const Vertices& positions) {
-  Vertices out(skin.vertices.size(), 3);
-  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i)
-    out.row(i) = positions.row(skin.vertices[i]);
-  return out;
-}
-
 // −(f/‖f‖)ᵀ ∂f/∂(spring variables)... with f = −∂E/∂p: ∂‖f‖/∂z = −(f/‖f‖)ᵀ H[0:3, :].
 Eigen::Matrix<double, 1, 12> ForceMagnitudeGradient(const Contact& contact) {
   const Eigen::Vector3d f = contact.force();
@@ -42,10 +34,8 @@ DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
       initial_support_(support),
       parameterization_(support, options.active, options.parameterization),
       support_laplacian_(UmbrellaLaplacian(support.triangles, support.vertices.rows())),
-      skin_laplacian_(UmbrellaLaplacian(body.skin().RestSurface(body.rest().vertices).triangles,
-                                        body.skin().vertices.size())),
       support_(support, "support"),
-      skin_(body.skin().RestSurface(body.rest().vertices), "body skin"),
+      pressures_(body, support.triangles, support.vertices.rows(), options.pressure),
       solver_(body, options.equilibrium),
       last_state_(start),
       counters_(std::make_shared<DesignCounters>()) {
@@ -58,9 +48,8 @@ DesignProblem::DesignProblem(const DesignProblem& other)
       initial_support_(other.initial_support_),
       parameterization_(other.parameterization_),
       support_laplacian_(other.support_laplacian_),
-      skin_laplacian_(other.skin_laplacian_),
       support_(other.initial_support_, "support"),
-      skin_(body_.skin().RestSurface(body_.rest().vertices), "body skin"),
+      pressures_(other.pressures_),
       solver_(other.solver_),
       adjoint_cholesky_(other.adjoint_cholesky_),
       last_state_(other.last_state_),
@@ -128,27 +117,19 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   TotalPotential::Evaluation e;
   potential.Evaluate(state, support_, HessianKind::kExact, with_gradient, &solver_.hints(), &e);
 
-  // Human side (Eq. 12): each skin vertex's own spring.
+  // Bi-directional pressures (Eq. 11–12, Fig. 4): the skin's own springs (the forces the
+  // equilibrium used) and the support vertices inside the deformed skin.
   const Skin& skin = body_.skin();
-  Eigen::VectorXd human_force = Eigen::VectorXd::Zero(skin.vertices.size());
-  for (const Contact& contact : e.contacts.contacts)
-    human_force[skin.local_of[contact.point]] = contact.force().norm();
-  out.human =
-      EvaluateSurfacePressure(human_force, skin.rest_areas, skin_laplacian_, options_.pressure);
-
-  // Support side: support vertices inside the deformed skin (bi-directional, Fig. 4).
-  skin_.UpdateVertices(SkinPositions(skin, e.positions));
-  const auto support_count = static_cast<int>(support_positions.rows());
-  const ContactSet reverse = EvaluateContacts(
-      skin_, support_positions, Eigen::VectorXi::LinSpaced(support_count, 0, support_count - 1),
-      potential.contact_stiffness(), with_gradient);
+  const ContactPressures pressures =
+      pressures_.Evaluate(e.positions, std::move(e.contacts), support_positions,
+                          potential.contact_stiffness(), with_gradient);
+  out.human = pressures.human;
+  out.support = pressures.support;
+  out.support_areas = pressures.support_areas;
+  const ContactSet& human_contacts = pressures.human_contacts;
+  const ContactSet& reverse = pressures.support_contacts;
   const TriMesh support_mesh{support_positions, initial_support_.triangles};
-  out.support_areas = BarycentricVertexAreas(support_mesh);
-  Eigen::VectorXd support_force = Eigen::VectorXd::Zero(support_count);
-  for (const Contact& contact : reverse.contacts)
-    support_force[contact.point] = contact.force().norm();
-  out.support = EvaluateSurfacePressure(support_force, out.support_areas, support_laplacian_,
-                                        options_.pressure);
+  const auto support_count = static_cast<int>(support_positions.rows());
 
   const SmoothnessValue psi =
       EvaluateSmoothness(support_positions, support_laplacian_, options_.taubin);
@@ -163,7 +144,7 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     const Clock::time_point adjoint_begin = Clock::now();
     Vertices d_body = Vertices::Zero(e.positions.rows(), 3);  // ∂ζ/∂(tet-mesh positions)
     Vertices d_support = Vertices::Zero(support_count, 3);    // ∂ζ/∂X, explicit part
-    for (const Contact& contact : e.contacts.contacts) {
+    for (const Contact& contact : human_contacts.contacts) {
       const double weight = out.human.d_force_magnitude[skin.local_of[contact.point]];
       if (weight == 0) continue;
       const Eigen::Matrix<double, 1, 12> row = weight * ForceMagnitudeGradient(contact);
@@ -204,7 +185,7 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       const Eigen::VectorXd z = adjoint_cholesky_.Solve(rhs);
       const Vertices velocity =
           potential.system().layout().VertexVelocity(body_, state, e.positions, z);
-      for (const Contact& contact : e.contacts.contacts) {
+      for (const Contact& contact : human_contacts.contacts) {
         const Eigen::RowVector3d v = velocity.row(contact.point);
         for (int k = 0; k < contact.anchor.feature.size(); ++k) {
           d_support.row(contact.anchor.feature.vertices[k]) -=

@@ -23,6 +23,7 @@
 
 #include "ergo/body/layered_body.h"
 #include "ergo/contact/support.h"
+#include "ergo/design/contact_pressures.h"
 #include "ergo/design/support_parameterization.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/ergonomics/pressure_cost.h"
@@ -104,9 +105,9 @@ class DesignProblem {
   DesignOptions options_;
   TriMesh initial_support_;
   SupportParameterization parameterization_;
-  SparseMatrix support_laplacian_, skin_laplacian_;
-  Support support_;  // the support at the current x
-  Support skin_;     // the body's skin, moved to the deformed positions
+  SparseMatrix support_laplacian_;
+  Support support_;                     // the support at the current x
+  ContactPressureEvaluator pressures_;  // skin/support springs → pressures
   EquilibriumSolver solver_;
   SparseCholesky adjoint_cholesky_;  // exact K̂ at y*, same pattern as Newton
   BodyState last_state_;
