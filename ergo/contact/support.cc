@@ -300,11 +300,13 @@ const TriMesh& Support::mesh() const { return impl_->mesh; }
 
 void Support::UpdateVertices(const Vertices& positions) {
   CHECK_EQ(positions.rows(), impl_->mesh.vertices.rows()) << "vertex count changed";
+  CHECK(positions.allFinite()) << "non-finite support vertex position";
   impl_->mesh.vertices = positions;
   impl_->Build();
 }
 
 SupportPoint Support::ClosestPoint(const Eigen::Vector3d& p, const SupportPoint* hint) const {
+  CHECK(p.allFinite()) << "closest point of a non-finite query " << p.transpose();
   ClosestTriangleSearch search(p);
   const int num_triangles = static_cast<int>(impl_->mesh.triangles.rows());
   if (hint != nullptr && hint->triangle >= 0 && hint->triangle < num_triangles) {

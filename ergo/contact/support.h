@@ -49,14 +49,14 @@ class Support {
   // normal and are never reported as faces.
   void UpdateVertices(const Vertices& positions);
 
-  // Closest point of S to p, its feature and side. `hint`: a previous answer for a nearby
-  // point (the previous anchor); it only seeds the search, the answer is the same without it
-  // up to exact distance ties between triangles.
+  // Closest point of S to p (finite, CHECKed), its feature and side. `hint`: a previous
+  // answer for a nearby point (the previous anchor); it only seeds the search, the answer is
+  // the same without it up to exact distance ties between triangles.
   SupportPoint ClosestPoint(const Eigen::Vector3d& p, const SupportPoint* hint = nullptr) const;
 
-  // True iff p is strictly inside S (points on S are outside). No search at all if p is
-  // outside S's bounding box, or if `hint` answered a query q on this shape and
-  // ‖p − q‖ < its distance (the ball around q holds no point of S: same side as q).
+  // True iff p is strictly inside S (points on S and non-finite points are outside). No
+  // search if p is outside S's bounding box, or if `hint` answered a query q on this shape
+  // and ‖p − q‖ < its distance (the ball around q holds no point of S: same side as q).
   bool Contains(const Eigen::Vector3d& p, const SupportPoint* hint = nullptr) const;
 
   // The closest point if p is strictly inside S (a contact), std::nullopt otherwise; the

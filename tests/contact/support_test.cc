@@ -315,6 +315,9 @@ TEST(Contact, HintsOnlyShortcutWhatTheyProve) {
   const Support other(MakeIcosphere(0.1, 2));
   const SupportPoint foreign = other.ClosestPoint(p);
   EXPECT_TRUE(support.Contains(p, &foreign));
+  // Non-finite points are never inside (a diverging Newton step must not crash the query).
+  EXPECT_FALSE(support.Contains(Vector3d(NAN, 0, 0)));
+  EXPECT_FALSE(support.Penetration(Vector3d(0, INFINITY, 0)).has_value());
 }
 
 TEST(Contact, FeaturePositionsFollowTheFeatureOrder) {
