@@ -1,0 +1,108 @@
+#include "ergo/design/equilibrium_report.h"
+
+#include "ergo/ergonomics/pressure_statistics.h"
+#include "ergo/mesh/vtu_writer.h"
+
+namespace ergo {
+namespace {
+
+Json Vector3Json(const Eigen::Vector3d& v) {
+  Json array = Json::Array();
+  for (int k = 0; k < 3; ++k) array.Append(v[k]);
+  return array;
+}
+
+Json StatisticsJson(const PressureStatistics& s) {
+  Json json = Json::Object();
+  json["contact_vertices"] = s.contact_vertices;
+  json["peak_pressure_Pa"] = s.peak;
+  json["p95_pressure_Pa"] = s.percentile95;
+  json["mean_pressure_Pa"] = s.mean;
+  json["contact_area_m2"] = s.contact_area;
+  json["total_force_N"] = s.total_force;
+  return json;
+}
+
+}  // namespace
+
+void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, const BodyState& state,
+                          const ContactPressures& pressures) {
+  const Vertices positions = DeformedPositions(body, state);
+  const Eigen::Index n = positions.rows();
+  Eigen::VectorXd pressure = Eigen::VectorXd::Zero(n), smoothed = Eigen::VectorXd::Zero(n),
+                  attached(n);
+  const Skin& skin = body.skin();
+  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i) {
+    pressure[skin.vertices[i]] = pressures.human.pressure[i];
+    smoothed[skin.vertices[i]] = pressures.human.smoothed[i];
+  }
+  for (Eigen::Index v = 0; v < n; ++v) attached[v] = body.attached()[v] ? 1.0 : 0.0;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> force =
+      Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
+  for (const Contact& contact : pressures.human_contacts.contacts)
+    force.row(contact.point) = contact.force().transpose();
+  VtuFields fields;
+  fields.point_scalars = {
+      {"pressure_Pa", pressure}, {"smoothed_pressure_Pa", smoothed}, {"attached", attached}};
+  fields.point_vectors = {{"displacement_m", positions - body.rest().vertices},
+                          {"contact_force_N", force}};
+  fields.cell_scalars = {{"youngs_modulus_Pa", body.material().youngs_modulus}};
+  WriteVtu(path, TetMesh{positions, body.rest().tets}, fields);
+}
+
+void WriteSupportVtu(const std::string& path, const TriMesh& support,
+                     const ContactPressures& pressures, const Vertices& initial) {
+  const Eigen::Index n = support.vertices.rows();
+  Eigen::Matrix<double, Eigen::Dynamic, 3> force =
+      Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
+  for (const Contact& contact : pressures.support_contacts.contacts)
+    force.row(contact.point) = contact.force().transpose();
+  VtuFields fields;
+  fields.point_scalars = {{"pressure_Pa", pressures.support.pressure},
+                          {"smoothed_pressure_Pa", pressures.support.smoothed},
+                          {"area_m2", pressures.support_areas}};
+  fields.point_vectors = {{"contact_force_N", force}};
+  if (initial.rows() == n)
+    fields.point_vectors.push_back({"displacement_m", support.vertices - initial});
+  WriteVtu(path, support, fields);
+}
+
+Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
+                        const ContactPressures& pressures, double contact_stiffness) {
+  const PressureStatistics human =
+      ComputePressureStatistics(pressures.human.pressure, body.skin().rest_areas);
+  const PressureStatistics support =
+      ComputePressureStatistics(pressures.support.pressure, pressures.support_areas);
+  Json json = Json::Object();
+  json["converged"] = result.converged;
+  json["status"] = EquilibriumStatusName(result.status);
+  json["reason"] = result.message;
+  json["iterations"] = result.iterations;
+  json["projected_steps"] = result.projected_steps;
+  json["residual_N"] = result.residual;
+  json["relative_residual"] = result.relative_residual;
+  json["contact_vertices"] = result.contact_vertices;
+  json["max_penetration_m"] = result.max_penetration;
+  json["total_contact_force_N"] = Vector3Json(result.contact_force);
+  json["load_N"] = Vector3Json(body.TotalLoad());
+  json["peak_pressure_Pa"] = human.peak;
+  json["p95_pressure_Pa"] = human.percentile95;
+  json["mean_pressure_Pa"] = human.mean;
+  json["contact_area_m2"] = human.contact_area;
+  json["contact_stiffness"] = contact_stiffness;
+  json["energy_J"] = result.energy;
+  json["zeta_human"] = pressures.human.cost;
+  json["zeta_support"] = pressures.support.cost;
+  json["human_side"] = StatisticsJson(human);
+  json["support_side"] = StatisticsJson(support);
+  Json seconds = Json::Object();
+  seconds["assembly"] = result.assembly_seconds;
+  seconds["contact"] = result.contact_seconds;
+  seconds["factorization"] = result.factorization_seconds;
+  seconds["line_search"] = result.line_search_seconds;
+  seconds["total"] = result.total_seconds;
+  json["seconds"] = seconds;
+  return json;
+}
+
+}  // namespace ergo

@@ -1,0 +1,35 @@
+// Output files describing one equilibrium on one support, for ParaView and for scripts:
+// the deformed body and the support as VTU with pressure, force and displacement fields,
+// and the numbers a designer reads as JSON. Every value comes from the contact evaluation
+// the equilibrium used (DESIGN.md §6). SI units; files written atomically.
+#pragma once
+
+#include <string>
+
+#include "ergo/body/body_state.h"
+#include "ergo/design/contact_pressures.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/mesh/json.h"
+
+namespace ergo {
+
+// Writes the deformed tet mesh: point fields pressure_Pa, smoothed_pressure_Pa (skin
+// vertices, 0 elsewhere), attached, displacement_m, contact_force_N; cell field
+// youngs_modulus_Pa.
+void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, const BodyState& state,
+                          const ContactPressures& pressures);
+
+// Writes the support surface: point fields pressure_Pa and smoothed_pressure_Pa (support
+// vertices inside the skin), contact_force_N, and displacement_m from `initial` (optional:
+// pass an empty matrix to skip).
+void WriteSupportVtu(const std::string& path, const TriMesh& support,
+                     const ContactPressures& pressures, const Vertices& initial);
+
+// The summary of an equilibrium: converged, status, reason, iterations, residual_N,
+// contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,
+// contact_area_m2, mean_pressure_Pa, p95_pressure_Pa, contact_stiffness, energy_J, the time
+// split, and the support side's peak pressure and contact vertex count.
+Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
+                        const ContactPressures& pressures, double contact_stiffness);
+
+}  // namespace ergo

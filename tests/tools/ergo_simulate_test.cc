@@ -1,0 +1,113 @@
+// ergo_simulate end to end: a ball built by ergo_body resting on a slab — outputs, force
+// balance, calibrated penetration, honest failure reports and clear input errors.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "ergo/mesh/json.h"
+#include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/primitives.h"
+#include "tests/support/test_paths.h"
+
+namespace ergo {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status = -1;
+  std::string output;
+};
+
+CommandResult RunCommand(const std::string& command) {
+  CommandResult result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  char buffer[4096];
+  while (fgets(buffer, sizeof(buffer), pipe)) result.output += buffer;
+  const int status = pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+// One ball body and one slab for all tests (building the body takes a second).
+class ToolsSimulate : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(testing::MakeScratchDir("simulate"));
+    const CommandResult build =
+        RunCommand("timeout 120 " ERGO_BIN_DIR
+                   "/ergo_body build --shape=sphere_shell --outer_radius=0.05 "
+                   "--core_radius=0.03 --youngs_modulus=1e4 --edge_length=0.012 --out=" +
+                   *dir_ + "/ball");
+    ASSERT_EQ(build.status, 0) << build.output;
+    // A slab whose top is 1 cm below the ball (centred at the origin), in millimetres.
+    TriMesh slab = MakeBox({-150, -110, -150}, {150, -60, 150}, {2, 1, 2});
+    WriteTriMesh(*dir_ + "/slab_mm.stl", slab);
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static std::string Simulate(const std::string& extra, const std::string& out) {
+    return "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
+           "/ball --support=" + *dir_ +
+           "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --out=" + *dir_ + "/" + out + " " + extra;
+  }
+  static std::string* dir_;
+};
+std::string* ToolsSimulate::dir_ = nullptr;
+
+TEST_F(ToolsSimulate, CalibratedRunBalancesTheLoadAndWritesEveryOutput) {
+  const CommandResult run = RunCommand(Simulate("--contact_stiffness=auto", "auto"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  for (const char* file : {"body_deformed.vtu", "support.vtu", "summary.json"})
+    EXPECT_TRUE(fs::exists(*dir_ + "/auto/" + file)) << file;
+  const Json summary = ReadJsonFile(*dir_ + "/auto/summary.json");
+  EXPECT_TRUE(GetBool(summary, "converged", "summary"));
+  const Json& force = GetMember(summary, "total_contact_force_N", "summary");
+  const Json& load = GetMember(summary, "load_N", "summary");
+  for (size_t k = 0; k < 3; ++k)
+    EXPECT_NEAR(force[k].AsNumber(), -load[k].AsNumber(), 1e-6 * std::abs(load[1].AsNumber()));
+  // The calibration's acceptance band (0.3 mm ± 0.03 mm).
+  EXPECT_NEAR(GetNumber(summary, "max_penetration_m", "summary"), 3e-4, 3e-5);
+  EXPECT_GT(GetNumber(summary, "peak_pressure_Pa", "summary"), 0);
+  EXPECT_GT(GetNumber(summary, "contact_area_m2", "summary"), 0);
+  EXPECT_GT(GetNumber(summary, "contact_stiffness", "summary"), 0);
+  std::ifstream vtu(*dir_ + "/auto/body_deformed.vtu");
+  std::string first;
+  std::getline(vtu, first);
+  EXPECT_NE(first.find("<?xml"), std::string::npos);
+}
+
+TEST_F(ToolsSimulate, ANonConvergedSolveExitsNonZeroAndStillWritesTheSummary) {
+  const CommandResult run =
+      RunCommand(Simulate("--contact_stiffness=600 --max_iterations=1 --place=none", "capped"));
+  EXPECT_EQ(run.status, 1) << run.output;
+  const Json summary = ReadJsonFile(*dir_ + "/capped/summary.json");
+  EXPECT_FALSE(GetBool(summary, "converged", "summary"));
+  EXPECT_NE(GetString(summary, "reason", "summary").find("Newton iterations"), std::string::npos);
+}
+
+TEST_F(ToolsSimulate, BadInputsExitWithStatusTwoNamingTheCulprit) {
+  CommandResult run = RunCommand(Simulate("--contact_stiffness=soft", "bad1"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("--contact_stiffness"), std::string::npos) << run.output;
+  run = RunCommand(Simulate("--external_force=1,2", "bad2"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("--external_force"), std::string::npos) << run.output;
+  run = RunCommand("timeout 60 " ERGO_BIN_DIR
+                   "/ergo_simulate --body=/nonexistent --support=x.off --out=/tmp/x");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("/nonexistent"), std::string::npos) << run.output;
+  run = RunCommand(Simulate("--lock=rz", "bad3"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.output.find("rotation"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(*dir_ + "/bad1/summary.json"));
+}
+
+}  // namespace
+}  // namespace ergo
