@@ -1,0 +1,114 @@
+// ergo_mesh: checks and converts mesh files.
+//
+//   ergo_mesh check FILE [--closed] [--unit=m|mm]
+//       reads FILE (.obj .off .ply .stl .msh .node/.ele) and reports every
+//       problem with the file, the element or line, and the fix. Exit status: 0
+//       clean (notes allowed), 1 problems found, 2 unusable input.
+//   ergo_mesh convert IN OUT [--unit=m|mm] [--out_unit=m|mm] [--binary]
+//   [--msh22]
+//       reads IN and writes OUT in the format of OUT's extension (exit 2 if IN
+//       is unusable).
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include "ergo/mesh/input_error.h"
+#include "ergo/mesh/length_unit.h"
+#include "ergo/mesh/mesh_check.h"
+#include "ergo/mesh/mesh_io.h"
+
+DEFINE_bool(closed, false, "check: the surface must be closed (open boundary is a problem)");
+DEFINE_string(unit, "m", "unit of the input file's coordinates: m or mm");
+DEFINE_string(out_unit, "m", "convert: unit of the output file's coordinates: m or mm");
+DEFINE_bool(binary, false, "convert: write binary PLY / STL");
+DEFINE_bool(msh22, false, "convert: write gmsh MSH 2.2 instead of 4.1");
+DEFINE_bool(self_intersections, true, "check: look for self-intersections (CGAL)");
+DEFINE_int32(max_examples, 5, "check: examples listed per kind of finding");
+
+namespace {
+
+constexpr int kUsageError = 2;
+
+ergo::LengthUnit UnitFlag(const std::string& name, const std::string& value) {
+  ergo::LengthUnit unit;
+  if (!ergo::ParseLengthUnit(value, &unit)) {
+    throw ergo::InputError("--" + name, "", "unknown unit '" + value + "'",
+                           "pass --" + name + "=m or --" + name + "=mm");
+  }
+  return unit;
+}
+
+int Check(const std::string& path) {
+  ergo::MeshCheckOptions options;
+  options.unit = UnitFlag("unit", FLAGS_unit);
+  options.require_closed = FLAGS_closed;
+  options.check_self_intersections = FLAGS_self_intersections;
+  options.max_examples = FLAGS_max_examples < 0 ? 0 : FLAGS_max_examples;
+  const ergo::MeshCheckReport report = ergo::CheckMeshFile(path, options);
+  std::cout << report.FullReport() << std::flush;
+  return report.ExitCode();
+}
+
+int Convert(const std::string& in, const std::string& out) {
+  ergo::ReadOptions read;
+  read.unit = UnitFlag("unit", FLAGS_unit);
+  ergo::WriteOptions write;
+  write.unit = UnitFlag("out_unit", FLAGS_out_unit);
+  write.encoding = FLAGS_binary ? ergo::Encoding::kBinary : ergo::Encoding::kAscii;
+  write.msh_version = FLAGS_msh22 ? ergo::MshVersion::k22 : ergo::MshVersion::k41;
+  const ergo::AnyMesh mesh = ergo::ReadAnyMesh(in, read);
+  if (mesh.is_tet) {
+    ergo::WriteTetMesh(out, mesh.volume, write);
+  } else {
+    ergo::WriteTriMesh(out, mesh.surface, write);
+  }
+  std::cout << "wrote " << out << "\n";
+  return 0;
+}
+
+// gflags exits with status 1 on an unknown flag, which would read as "problems found":
+// refuse unknown flags first, with the usage status 2.
+bool AllFlagsKnown(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string name = argv[i];
+    if (name == "--") break;
+    if (name.size() < 2 || name[0] != '-') continue;
+    name = name.substr(name.find_first_not_of('-'));
+    name = name.substr(0, name.find('='));
+    gflags::CommandLineFlagInfo info;
+    if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
+    if (name.rfind("no", 0) == 0 && gflags::GetCommandLineFlagInfo(name.substr(2).c_str(), &info) &&
+        info.type == "bool") {
+      continue;
+    }
+    std::cerr << "--" << name << ": unknown flag (fix: see ergo_mesh --help)\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "ergo_mesh check FILE [--closed] [--unit=m|mm]\n"
+      "       ergo_mesh convert IN OUT [--unit=m|mm] "
+      "[--out_unit=m|mm] [--binary] [--msh22]");
+  if (!AllFlagsKnown(argc, argv)) return kUsageError;
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  const std::string command = argc > 1 ? argv[1] : "";
+  try {
+    if (command == "check" && argc == 3) return Check(argv[2]);
+    if (command == "convert" && argc == 4) return Convert(argv[2], argv[3]);
+  } catch (const ergo::InputError& error) {
+    std::cerr << error.what() << "\n";
+    return kUsageError;
+  }
+  std::cerr << "usage: " << gflags::ProgramUsage() << "\n";
+  return kUsageError;
+}
