@@ -7,9 +7,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include <glog/logging.h>
 #include <Eigen/Geometry>
 
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/self_intersection.h"
 
 namespace ergo {
 namespace {
@@ -156,6 +158,29 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source) {
     what << "inside-out support: the enclosed volume is " << volume
          << " m^3 (not positive), i.e. the triangles are clockwise seen from outside";
     throw InputError(source, "", what.str(), "reverse the vertex order of every triangle");
+  }
+
+  // Self-intersections (the mesh foundation's exact CGAL check): a surface crossing itself
+  // encloses no well-defined volume, and the inside test would contradict itself there.
+  const SelfIntersections crossings = FindSelfIntersections(mesh, 3);
+  if (crossings.checked && !crossings.pairs.empty()) {
+    std::ostringstream what;
+    what << "self-intersecting support: triangles " << crossings.pairs[0].first << " and "
+         << crossings.pairs[0].second << " intersect";
+    if (crossings.pairs.size() > 1) {
+      what << " (and " << (crossings.stopped_at_limit ? "more than " : "")
+           << crossings.pairs.size() - 1 << " more pair" << (crossings.pairs.size() > 2 ? "s" : "")
+           << ")";
+    }
+    throw InputError(source,
+                     "triangles " + std::to_string(crossings.pairs[0].first) + " and " +
+                         std::to_string(crossings.pairs[0].second),
+                     what.str(),
+                     "remove the overlap (e.g. union the parts with a mesh boolean) so the "
+                     "surface bounds a single volume");
+  }
+  if (!crossings.checked) {
+    LOG(WARNING) << source << ": self-intersection check skipped: " << crossings.skipped_because;
   }
 }
 

@@ -1,7 +1,7 @@
 // The checks a support surface S must pass before contact can use it (paper §3.5: a vertex
 // collides with "the volume enclosed by the supporting surface", so S must enclose one):
 // closed, edge- and vertex-manifold, consistently and outward oriented, no degenerate
-// triangles, finite coordinates. Self-intersection is not checked here.
+// triangles, finite coordinates, no self-intersection (ergo/mesh/self_intersection.h).
 #pragma once
 
 #include <string>

@@ -108,6 +108,20 @@ TEST(Contact, SupportRefusesOpenInconsistentAndDegenerateMeshes) {
   message = InputErrorMessage([&] { Support s(not_finite, "seat.ply"); });
   EXPECT_NE(message.find("vertex 4: non-finite"), std::string::npos) << message;
 
+  // Two overlapping closed spheres in one mesh: closed, manifold, outward — but crossing.
+  TriMesh two = MakeIcosphere(0.2, 2);
+  const TriMesh shifted = MakeIcosphere(0.2, 2, Vector3d(0.15, 0, 0));
+  const Eigen::Index n = two.vertices.rows(), m = two.triangles.rows();
+  two.vertices.conservativeResize(2 * n, 3);
+  two.vertices.bottomRows(n) = shifted.vertices;
+  two.triangles.conservativeResize(2 * m, 3);
+  two.triangles.bottomRows(m) = shifted.triangles.array() + static_cast<int>(n);
+  message = InputErrorMessage([&] { Support s(two, "two.ply"); });
+  EXPECT_NE(message.find("self-intersecting support: triangles"), std::string::npos) << message;
+  // Apart, the two spheres are a valid support.
+  two.vertices.bottomRows(n).col(0).array() += 1.0;
+  EXPECT_EQ(InputErrorMessage([&] { Support s(two, "two.ply"); }), "");
+
   TriMesh empty;
   message = InputErrorMessage([&] { Support s(empty, "seat.ply"); });
   EXPECT_NE(message.find("at least 4"), std::string::npos) << message;
