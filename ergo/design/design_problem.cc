@@ -114,15 +114,19 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
 
   // The contact forces the solver used, and the exact K̂ at y* for the adjoint.
   const TotalPotential& potential = solver_.potential();
-  TotalPotential::Evaluation e;
-  potential.Evaluate(state, support_, HessianKind::kExact, with_gradient, &solver_.hints(), &e);
+  // Newton's last evaluation is at y* already (contacts, springs and, when Newton took the
+  // exact K̂, the Hessian the adjoint needs): reuse it rather than assemble twice.
+  TotalPotential::Evaluation computed;
+  const bool reuse = !with_gradient || solver_.last_hessian_exact();
+  if (!reuse)
+    potential.Evaluate(state, support_, HessianKind::kExact, true, &solver_.hints(), &computed);
+  const TotalPotential::Evaluation& e = reuse ? solver_.last_evaluation() : computed;
 
   // Bi-directional pressures (Eq. 11–12, Fig. 4): the skin's own springs (the forces the
   // equilibrium used) and the support vertices inside the deformed skin.
   const Skin& skin = body_.skin();
-  const ContactPressures pressures =
-      pressures_.Evaluate(e.positions, std::move(e.contacts), support_positions,
-                          potential.contact_stiffness(), with_gradient);
+  const ContactPressures pressures = pressures_.Evaluate(
+      e.positions, e.contacts, support_positions, potential.contact_stiffness(), with_gradient);
   out.human = pressures.human;
   out.support = pressures.support;
   out.support_areas = pressures.support_areas;

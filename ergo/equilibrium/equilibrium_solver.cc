@@ -151,7 +151,8 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       body_.total_mass() * body_.gravity().norm() * potential_.lever_length() +
       body_.options().external_force.norm() * potential_.lever_length();
 
-  TotalPotential::Evaluation e;
+  TotalPotential::Evaluation& e = last_;
+  last_exact_ = false;
   auto finish = [&](EquilibriumStatus status, const std::string& message) {
     result.status = status;
     result.converged = status == EquilibriumStatus::kConverged;
@@ -163,6 +164,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     const HessianKind first_kind =
         options_.exact_newton_first ? HessianKind::kExact : HessianKind::kProjectedPsd;
     potential_.Evaluate(state, support, first_kind, true, &hints_, &e);
+    last_exact_ = first_kind == HessianKind::kExact;
     result.assembly_seconds += e.assembly_seconds;
     result.contact_seconds += e.contact_seconds;
     result.iterations = iteration;
@@ -213,6 +215,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
         result.assembly_seconds += projected.assembly_seconds;
         result.contact_seconds += projected.contact_seconds;
         e.body.hessian.swap(projected.body.hessian);
+        last_exact_ = false;
       }
       const Clock::time_point start_projected = Clock::now();
       const FactorizationStatus factor =

@@ -93,6 +93,12 @@ class EquilibriumSolver {
   // Per tet-mesh-vertex anchors of the last solve (closest-point hints for the next).
   std::vector<SupportPoint>& hints() { return hints_; }
 
+  // The evaluation at the state the last Solve returned (positions, contact springs with
+  // their Hessians, reduced gradient and — when `last_hessian_exact()` — the exact K̂ there),
+  // so callers (the adjoint gradient) need not assemble it again. Valid until the next Solve.
+  const TotalPotential::Evaluation& last_evaluation() const { return last_; }
+  bool last_hessian_exact() const { return last_exact_; }
+
  private:
   // A message naming the free core DOFs (translations perpendicular to every contact
   // normal) along which the contacts give no stiffness, or "" if there is none.
@@ -108,6 +114,8 @@ class EquilibriumSolver {
   TotalPotential potential_;
   SparseCholesky cholesky_;
   std::vector<SupportPoint> hints_;
+  TotalPotential::Evaluation last_;
+  bool last_exact_ = false;
   double body_size_ = 1;  // bounding-box diagonal of the rest body, m
 };
 
