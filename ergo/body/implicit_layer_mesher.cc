@@ -25,6 +25,18 @@ using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Se
 using Complex = CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>;
 using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
 
+// A size bound that varies in space: base · scale(p) (Mesh_3's sizing-field concept).
+struct ScaledSize {
+  double base;
+  std::function<double(const Eigen::Vector3d&)> scale;
+  double operator()(const Point& p, int, const Domain::Index&) const {
+    const double s = scale(
+        Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+    CHECK(s > 0) << "the mesh size scale must be positive";
+    return base * s;
+  }
+};
+
 // Inserts the first `count` seeds of each surface as surface vertices of an empty complex.
 // Refinement can start only if some restricted facet exists, i.e. some Voronoi vertex
 // (dual of a cell) of the seeds lies in the layer; returns whether one does.
@@ -77,11 +89,18 @@ LayerMesherResult MeshImplicitLayer(const RegionFunction& region, const Eigen::A
       function, box, criteria.relative_error_bound, [](int label) { return label != kLayerRegion; },
       &random);
   namespace params = CGAL::parameters;
-  const Criteria mesh_criteria(params::facet_angle = criteria.facet_angle_degrees,
-                               params::facet_size = criteria.facet_size,
-                               params::facet_distance = criteria.facet_distance,
-                               params::cell_radius_edge_ratio = criteria.cell_radius_edge_ratio,
-                               params::cell_size = criteria.cell_size);
+  const Criteria mesh_criteria =
+      criteria.size_scale
+          ? Criteria(params::facet_angle = criteria.facet_angle_degrees,
+                     params::facet_size = ScaledSize{criteria.facet_size, criteria.size_scale},
+                     params::facet_distance = criteria.facet_distance,
+                     params::cell_radius_edge_ratio = criteria.cell_radius_edge_ratio,
+                     params::cell_size = ScaledSize{criteria.cell_size, criteria.size_scale})
+          : Criteria(params::facet_angle = criteria.facet_angle_degrees,
+                     params::facet_size = criteria.facet_size,
+                     params::facet_distance = criteria.facet_distance,
+                     params::cell_radius_edge_ratio = criteria.cell_radius_edge_ratio,
+                     params::cell_size = criteria.cell_size);
 
   LayerMesherResult result;
   auto start = std::chrono::steady_clock::now();

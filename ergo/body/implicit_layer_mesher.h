@@ -36,6 +36,9 @@ struct LayerMesherCriteria {
   double facet_distance = 0;          // bound on facet-centre-to-surface distance (> 0)
   double cell_radius_edge_ratio = 2;  // circumradius / shortest edge
   double cell_size = 0;               // circumradius bound of tets (> 0)
+  // Optional space-varying scale of facet_size and cell_size (1 = as given): local mesh
+  // refinement, e.g. under a contact. Must be positive wherever it is evaluated.
+  std::function<double(const Eigen::Vector3d&)> size_scale;
   // Surface points are found by bisection to this fraction of the bounding sphere radius.
   double relative_error_bound = 1e-5;
   bool perturb = true;  // sliver perturbation (moves vertices, surface ones along the surface)

@@ -249,6 +249,12 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
   criteria.facet_distance = options.facet_distance > 0 ? options.facet_distance : h / 10;
   criteria.cell_radius_edge_ratio = options.radius_edge_ratio;
   criteria.cell_size = h * std::sqrt(3.0 / 8.0);
+  if (options.edge_length_field) {
+    const auto field = options.edge_length_field;
+    criteria.size_scale = [field, h](const Eigen::Vector3d& p) {
+      return std::min(field(p), h) / h;
+    };
+  }
   criteria.relative_error_bound = options.relative_error_bound;
   criteria.exude = options.exude;
   criteria.perturb = options.perturb;

@@ -30,6 +30,9 @@ struct BuilderOptions {
   // cell_size = h·√(3/8), the circumradii of an equilateral triangle and a regular tet of
   // edge h, so edges come out at most about h (the report gives the mean).
   double edge_length = 0;
+  // Optional local target edge length h(p) ≤ edge_length, m: refines where it matters
+  // (e.g. around a contact). The thickness checks still use edge_length.
+  std::function<double(const Eigen::Vector3d&)> edge_length_field;
   double facet_distance = 0;        // m; 0 = edge_length / 10
   double facet_angle_degrees = 25;  // Mesh_3 facet_angle
   double radius_edge_ratio = 2.0;   // Mesh_3 cell_radius_edge_ratio

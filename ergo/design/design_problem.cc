@@ -6,6 +6,7 @@
 
 #include <glog/logging.h>
 
+#include "ergo/mesh/preconditioned_cg.h"
 #include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
@@ -180,13 +181,24 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂X through the springs' cross blocks.
     const Eigen::VectorXd rhs = potential.system().ReduceVertexGradient(state, e.positions, d_body);
     if (rhs.squaredNorm() > 0) {
-      const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.body.hessian);
-      if (!factor.ok) {
-        return fail("the exact Hessian at the equilibrium is not positive definite (" +
-                    factor.message +
-                    "): the equilibrium is not a strict minimum, so dy/dx is undefined");
+      // The adjoint system with the exact K̂ at y*: conjugate gradients preconditioned by the
+      // Newton factor (of K̂ at the last iterate, next to y*), else a fresh factorisation.
+      Eigen::VectorXd z;
+      const SparseCholesky& newton_factor = solver_.factor();
+      if (newton_factor.factorized()) {
+        const PcgResult cg =
+            PreconditionedConjugateGradient(e.body.hessian, newton_factor, rhs, 1e-12, 30);
+        if (cg.converged) z = cg.x;
       }
-      const Eigen::VectorXd z = adjoint_cholesky_.Solve(rhs);
+      if (z.size() == 0) {
+        const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.body.hessian);
+        if (!factor.ok) {
+          return fail("the exact Hessian at the equilibrium is not positive definite (" +
+                      factor.message +
+                      "): the equilibrium is not a strict minimum, so dy/dx is undefined");
+        }
+        z = adjoint_cholesky_.Solve(rhs);
+      }
       const Vertices velocity =
           potential.system().layout().VertexVelocity(body_, state, e.positions, z);
       for (const Contact& contact : human_contacts.contacts) {

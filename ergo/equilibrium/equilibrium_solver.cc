@@ -1,5 +1,6 @@
 #include "ergo/equilibrium/equilibrium_solver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -7,6 +8,7 @@
 #include <glog/logging.h>
 
 #include "ergo/equilibrium/golden_section.h"
+#include "ergo/mesh/preconditioned_cg.h"
 
 namespace ergo {
 namespace {
@@ -58,9 +60,11 @@ std::string EquilibriumResult::FullReport() const {
   std::ostringstream out;
   out << BriefReport() << "\n"
       << "  energy " << energy << " J, contact force (" << contact_force.transpose() << ") N\n"
+      << "  linear algebra: " << factorizations << " factorisations, " << pcg_iterations
+      << " PCG iterations on reused factors\n"
       << "  time: assembly " << assembly_seconds << " s, contact " << contact_seconds
-      << " s, factorisation " << factorization_seconds << " s, line search " << line_search_seconds
-      << " s, total " << total_seconds << " s";
+      << " s, factorisation+solves " << factorization_seconds << " s, line search "
+      << line_search_seconds << " s, total " << total_seconds << " s";
   return out.str();
 }
 
@@ -197,40 +201,66 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                     "above the support (along the load) or check the support's position");
     }
 
-    // Newton matrix: exact K̂ if positive definite, else the PSD projection.
-    const Clock::time_point start_factor = Clock::now();
-    bool exact_ok = false;
-    if (first_kind == HessianKind::kExact) {
-      SparseMatrix exact = e.body.hessian;
-      if (!in_contact)
-        system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &exact);
-      exact_ok = cholesky_.Factorize(exact).ok;
+    // Newton step. First conjugate gradients preconditioned by the last factor (cheap when
+    // the matrix changed little), then a new factorisation: the exact K̂ if positive
+    // definite, else the PSD projection.
+    Eigen::VectorXd step;
+    const Clock::time_point start_linear = Clock::now();
+    if (options_.reuse_factorization && cholesky_.factorized() &&
+        first_kind == HessianKind::kExact) {
+      SparseMatrix with_mass;
+      const SparseMatrix* newton = &e.body.hessian;
+      if (!in_contact) {
+        with_mass = e.body.hessian;
+        system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &with_mass);
+        newton = &with_mass;
+      }
+      // Forcing term ∝ the relative residual: superlinear convergence of the inexact Newton.
+      const double forcing = std::clamp(result.relative_residual, 1e-12, 1e-2);
+      const PcgResult cg = PreconditionedConjugateGradient(*newton, cholesky_, -e.gradient, forcing,
+                                                           options_.max_pcg_iterations);
+      result.pcg_iterations += cg.iterations;
+      if (cg.converged) step = cg.x;
     }
-    if (!exact_ok) {
-      result.factorization_seconds += SecondsSince(start_factor);
+    if (step.size() == 0) {
+      bool exact_ok = false;
       if (first_kind == HessianKind::kExact) {
-        ++result.projected_steps;
-        TotalPotential::Evaluation projected;
-        potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_, &projected);
-        result.assembly_seconds += projected.assembly_seconds;
-        result.contact_seconds += projected.contact_seconds;
-        e.body.hessian.swap(projected.body.hessian);
-        last_exact_ = false;
+        SparseMatrix exact = e.body.hessian;
+        if (!in_contact)
+          system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &exact);
+        exact_ok = cholesky_.Factorize(exact).ok;
+        ++result.factorizations;
       }
-      const Clock::time_point start_projected = Clock::now();
-      const FactorizationStatus factor =
-          FactorizeNewtonMatrix(state, e.positions, !in_contact, &e.body.hessian);
-      result.factorization_seconds += SecondsSince(start_projected);
-      if (!factor.ok) {
-        return finish(EquilibriumStatus::kNonFinite,
-                      "the Newton matrix could not be factorised: " + factor.message);
+      if (!exact_ok) {
+        if (first_kind == HessianKind::kExact) {
+          ++result.projected_steps;
+          result.factorization_seconds += SecondsSince(start_linear);
+          TotalPotential::Evaluation projected;
+          potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_,
+                              &projected);
+          result.assembly_seconds += projected.assembly_seconds;
+          result.contact_seconds += projected.contact_seconds;
+          e.body.hessian.swap(projected.body.hessian);
+          last_exact_ = false;
+        }
+        const Clock::time_point start_projected = Clock::now();
+        const FactorizationStatus factor =
+            FactorizeNewtonMatrix(state, e.positions, !in_contact, &e.body.hessian);
+        ++result.factorizations;
+        result.factorization_seconds += SecondsSince(start_projected);
+        if (!factor.ok) {
+          return finish(EquilibriumStatus::kNonFinite,
+                        "the Newton matrix could not be factorised: " + factor.message);
+        }
+      } else {
+        result.factorization_seconds += SecondsSince(start_linear);
       }
+      const Clock::time_point start_solve = Clock::now();
+      step = -cholesky_.Solve(e.gradient);
+      result.factorization_seconds += SecondsSince(start_solve);
     } else {
-      result.factorization_seconds += SecondsSince(start_factor);
+      result.factorization_seconds += SecondsSince(start_linear);
     }
-    const Clock::time_point start_solve = Clock::now();
-    Eigen::VectorXd step = -cholesky_.Solve(e.gradient);
-    result.factorization_seconds += SecondsSince(start_solve);
     // Shorten steps that would move a vertex farther than the cap (nearly free modes).
     const double cap = options_.max_step_fraction * body_size_;
     const double largest =

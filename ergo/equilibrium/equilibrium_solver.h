@@ -42,6 +42,11 @@ struct EquilibriumOptions {
   double max_step_fraction = 0.05;
   // Try the exact Hessian first (see above); false = always the PSD projection.
   bool exact_newton_first = true;
+  // Solve the Newton system by conjugate gradients preconditioned with the last Cholesky
+  // factor (from an earlier step or an earlier solve of a nearby problem) before
+  // refactorising; factorisation dominates Newton's time (README, Performance).
+  bool reuse_factorization = true;
+  int max_pcg_iterations = 12;
   // Called after every Newton iteration (iteration, residual N, step η, contacts).
   std::function<void(int, double, double, int)> progress;
 };
@@ -64,6 +69,8 @@ struct EquilibriumResult {
   std::string message;      // why it stopped, in words
   int iterations = 0;       // Newton iterations
   int projected_steps = 0;  // iterations that fell back to the PSD-projected K̂
+  int factorizations = 0;   // numeric Cholesky factorisations
+  int pcg_iterations = 0;   // conjugate-gradient iterations on reused factors
   double residual = 0;      // final ResidualNorm, N
   double relative_residual = 0;
   double energy = 0;  // J
@@ -97,6 +104,9 @@ class EquilibriumSolver {
   // their Hessians, reduced gradient and — when `last_hessian_exact()` — the exact K̂ there),
   // so callers (the adjoint gradient) need not assemble it again. Valid until the next Solve.
   const TotalPotential::Evaluation& last_evaluation() const { return last_; }
+  // The last Cholesky factor (of the Newton matrix at or near the returned state): a
+  // preconditioner for the adjoint solve.
+  const SparseCholesky& factor() const { return cholesky_; }
   bool last_hessian_exact() const { return last_exact_; }
 
  private:

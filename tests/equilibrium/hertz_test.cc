@@ -1,0 +1,152 @@
+// Hertz contact (an answer known without the code): an elastic ball of radius R with a
+// small rigid core, pressed onto a rigid plane by a force F on the core, in the
+// small-strain regime. Theory: contact radius a = (3FR / 4E*)^(1/3), peak pressure
+// p0 = 3F / (2π a²), E* = E / (1 − ν²), pressure p(r) = p0 √(1 − r²/a²). The simulated
+// a and p0 come from a least-squares fit of that profile to the skin-vertex pressures
+// (Ceres, hand-written Jacobian); both must be within 10 % and improve under refinement.
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include <ceres/ceres.h>
+#include <gtest/gtest.h>
+
+#include "ergo/body/core_lock.h"
+#include "ergo/body/layer_builder.h"
+#include "ergo/equilibrium/calibrate_contact_stiffness.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/equilibrium/placement.h"
+#include "ergo/mesh/primitives.h"
+
+namespace ergo {
+namespace {
+
+constexpr double kRadius = 0.05, kCore = 0.015, kYoung = 1e4, kPoisson = 0.3;
+
+// Residual p0 √(1 − r²/a²)₊ − p for one vertex; parameters (p0, a).
+class HertzProfileResidual : public ceres::SizedCostFunction<1, 2> {
+ public:
+  HertzProfileResidual(double r, double p, double weight) : r_(r), p_(p), w_(weight) {}
+  bool Evaluate(double const* const* parameters, double* residual,
+                double** jacobians) const override {
+    const double p0 = parameters[0][0], a = parameters[0][1];
+    const double s = 1 - r_ * r_ / (a * a);
+    const double root = s > 0 ? std::sqrt(s) : 0;
+    residual[0] = w_ * (p0 * root - p_);
+    if (jacobians && jacobians[0]) {
+      jacobians[0][0] = w_ * root;
+      // d/da √(1 − r²/a²) = r² / (a³ √(…)); capped near the rim where the profile is vertical.
+      jacobians[0][1] = root > 1e-3 ? w_ * p0 * r_ * r_ / (a * a * a * root) : 0;
+    }
+    return true;
+  }
+
+ private:
+  double r_, p_, w_;
+};
+
+struct HertzMeasurement {
+  double a = 0, p0 = 0, a_moment = 0;
+  int vertices = 0, contacts = 0;
+  double penetration = 0;
+};
+
+HertzMeasurement Simulate(double fine_edge, double force) {
+  // The ball, refined near its bottom (the contact) and coarse elsewhere.
+  const Eigen::Vector3d centre(0, kRadius, 0), bottom(0, 0, 0);
+  ImplicitLayer layer;
+  layer.outer = [&](const Eigen::Vector3d& p) { return (p - centre).norm() - kRadius; };
+  layer.core = [&](const Eigen::Vector3d& p) { return (p - centre).norm() - kCore; };
+  layer.bounds = Eigen::AlignedBox3d(centre - Eigen::Vector3d::Constant(1.2 * kRadius),
+                                     centre + Eigen::Vector3d::Constant(1.2 * kRadius));
+  BuilderOptions builder;
+  builder.edge_length = 0.012;
+  builder.edge_length_field = [=](const Eigen::Vector3d& p) {
+    const double d = (p - bottom).norm();
+    return std::min(0.012, fine_edge + std::max(0.0, d - 0.016) * 0.4);
+  };
+  const BuiltLayer built = BuildLayerFromImplicit(layer, builder, "Hertz ball");
+  TissueMaterial material;
+  material.youngs_modulus = Eigen::VectorXd::Constant(built.mesh.tets.rows(), kYoung);
+  material.poisson_ratio = Eigen::VectorXd::Constant(built.mesh.tets.rows(), kPoisson);
+  LayeredBodyOptions options;
+  options.gravity.setZero();  // the load is F alone
+  options.external_force = Eigen::Vector3d(0, -force, 0);
+  options.lock = ParseCoreLock("tx,tz,rx,ry,rz");
+  const LayeredBody body =
+      LayeredBody::Create(built.mesh, built.attached, material, options, "Hertz ball");
+
+  const Support plane(MakeBox({-0.1, -0.05, -0.1}, {0.1, 0, 0.1}, {1, 1, 1}), "rigid plane");
+  const BodyState start = PlaceAboveSupport(body, RestState(body), plane, 1e-4).state;
+  EquilibriumOptions eq;
+  eq.contact_stiffness = 100;
+  EquilibriumSolver solver(body, eq);
+  // Penalty penetration ~1 % of the Hertz indentation a²/R (2 mm here).
+  const double a_theory = std::cbrt(3 * force * kRadius / (4 * kYoung / (1 - kPoisson * kPoisson)));
+  EquilibriumResult result;
+  const CalibrationResult calibration = CalibrateContactStiffness(
+      solver, plane, start, 0.01 * a_theory * a_theory / kRadius, CalibrationOptions(), &result);
+  EXPECT_TRUE(calibration.converged) << calibration.BriefReport();
+  result = solver.Solve(plane, result.state);
+  EXPECT_TRUE(result.converged) << result.FullReport();
+
+  TotalPotential::Evaluation e;
+  solver.potential().Evaluate(result.state, plane, HessianKind::kExact, false, nullptr, &e);
+  ceres::Problem problem;
+  double parameters[2] = {3 * force / (2 * M_PI * a_theory * a_theory), a_theory};
+  double moment = 0, total = 0;
+  HertzMeasurement m;
+  const Skin& skin = body.skin();
+  std::vector<double> pressure(static_cast<size_t>(skin.vertices.size()), 0.0);
+  for (const Contact& c : e.contacts.contacts)
+    pressure[skin.local_of[c.point]] = c.force().norm() / skin.rest_areas[skin.local_of[c.point]];
+  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i) {
+    const Eigen::Vector3d p = e.positions.row(skin.vertices[i]);
+    const double r = std::hypot(p.x() - result.state.centre.x(), p.z() - result.state.centre.z());
+    if (p.y() > 0.3 * kRadius || r > 2 * a_theory) continue;  // the contact neighbourhood
+    // Weight by √area: the fit is then a discretised L² fit of the pressure field.
+    problem.AddResidualBlock(
+        new HertzProfileResidual(r, pressure[i], std::sqrt(skin.rest_areas[i])), nullptr,
+        parameters);
+    const double f = pressure[i] * skin.rest_areas[i];
+    moment += f * r * r;
+    total += f;
+  }
+  ceres::Solver::Options fit;
+  fit.max_num_iterations = 200;
+  ceres::Solver::Summary summary;
+  ceres::Solve(fit, &problem, &summary);
+  m.p0 = parameters[0];
+  m.a = parameters[1];
+  m.a_moment = std::sqrt(2.5 * moment / total);  // ∫p r² dA / ∫p dA = 2a²/5 for Hertz
+  m.vertices = static_cast<int>(body.rest().vertices.rows());
+  m.contacts = result.contact_vertices;
+  m.penetration = result.max_penetration;
+  return m;
+}
+
+TEST(Equilibrium, HertzContactRadiusAndPeakPressureConvergeToTheory) {
+  const double E_star = kYoung / (1 - kPoisson * kPoisson);
+  const double a_target = 0.2 * kRadius;  // a/R = 0.2: small strain
+  const double force = 4 * E_star * a_target * a_target * a_target / (3 * kRadius);
+  const double a = std::cbrt(3 * force * kRadius / (4 * E_star)),
+               p0 = 3 * force / (2 * M_PI * a * a);
+  double previous_error = INFINITY;
+  for (double fine : {0.0032, 0.0022}) {
+    const HertzMeasurement m = Simulate(fine, force);
+    const double a_error = std::abs(m.a - a) / a, p_error = std::abs(m.p0 - p0) / p0;
+    std::cout << "h=" << fine * 1e3 << " mm: " << m.vertices << " vertices, " << m.contacts
+              << " contacts, penetration " << m.penetration * 1e3 << " mm; a=" << m.a * 1e3
+              << " mm (theory " << a * 1e3 << ", moment estimate " << m.a_moment * 1e3
+              << "), p0=" << m.p0 << " Pa (theory " << p0 << "); errors " << a_error * 100 << " %, "
+              << p_error * 100 << " %\n";
+    EXPECT_LT(a_error, 0.10);
+    EXPECT_LT(p_error, 0.10);
+    const double error = std::max(a_error, p_error);
+    EXPECT_LT(error, previous_error) << "refinement did not reduce the error";
+    previous_error = error;
+  }
+}
+
+}  // namespace
+}  // namespace ergo
