@@ -1,0 +1,335 @@
+// ergo_optimize: the designer's main job (paper §4–5). Takes a scenario (chair, shoe sole,
+// mouse, …: --flagfile=data/SCENARIO.flags, any flag overridable), optimises the support's
+// shape for even contact pressure with the chosen optimiser and budget, and writes to
+// --out (default ./ergo_out): summary.md / summary.json (the paper's Table 1 columns),
+// history.csv, the initial and optimised support as PLY and print-ready STL (mm), body and
+// support VTU with pressure and displacement fields, and PNG pictures. Ctrl-C stops cleanly
+// and writes everything for the best design so far. With no flags: the quick shoe sole.
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+#include <omp.h>
+
+#include "ergo/equilibrium/calibrate_contact_stiffness.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/mesh/atomic_file.h"
+#include "ergo/mesh/input_error.h"
+#include "ergo/mesh/laplacian.h"
+#include "solvers/design_objective.h"
+#include "solvers/history_csv.h"
+#include "solvers/optimizer.h"
+#include "tools/common/scenario_flags.h"
+#include "tools/ergo_optimize/run_outputs.h"
+
+#ifndef ERGO_TOOLS_DIR
+#define ERGO_TOOLS_DIR ""
+#endif
+
+DEFINE_string(
+    optimizer, "paper-ncg",
+    "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, nlopt-lbfgs");
+DEFINE_int32(max_evals, 100, "budget: φ evaluations (equilibrium solves), probes included");
+DEFINE_double(max_seconds, 0, "budget: wall seconds; 0 = unlimited");
+DEFINE_string(out, "ergo_out", "output directory (created if missing)");
+DEFINE_int32(exponent, 3, "pressure exponent e of ζ = Σ s P̄^e (2, 3 or 4)");
+DEFINE_double(pressure_smoothing, 1.0, "λ_p of P̄ = (I − λ_p L) P, in [0, 1] (1 = the paper)");
+DEFINE_string(gamma, "auto",
+              "weight γ of the smoothness term ψ, or auto: κ·10^gamma_power with ζ(x₀) = κψ(x₀)");
+DEFINE_int32(gamma_power, -1, "j in γ = κ·10^j when --gamma=auto");
+DEFINE_double(taubin_lambda, 0.5, "ψ's Taubin λ");
+DEFINE_double(taubin_mu, -0.53, "ψ's Taubin μ");
+DEFINE_int32(taubin_iterations, 1, "ψ's Taubin iterations m");
+DEFINE_string(
+    contact_stiffness, "scenario",
+    "penalty k in N/m, auto (calibrate to --target_penetration), or scenario (the preset's)");
+DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
+DEFINE_int32(post_smoothing, 0,
+             "Taubin iterations applied to the optimised design's designed region (paper §5.1; "
+             "chair: a few)");
+DEFINE_int32(threads, 0,
+             "threads for assembly, contact and the probes' equilibria (0 = all cores)");
+DEFINE_bool(plot, true, "write PNG pictures with tools/plot_results.py (python3 + matplotlib)");
+DEFINE_bool(progress, true, "print one line per iteration");
+
+namespace ergo {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+void OnInterrupt(int) {
+  g_stop = true;
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills
+}
+
+double ParsePositive(const std::string& text, const std::string& flag) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(value >= 0) || !std::isfinite(value)) {
+    throw InputError("--" + flag, "", "'" + text + "' is not a non-negative number",
+                     "see ergo_optimize --help");
+  }
+  return value;
+}
+
+std::string Format(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, value);
+  return buffer;
+}
+
+// The designed region smoothed by Taubin steps (non-designed vertices fixed), as a design.
+Eigen::VectorXd PostSmooth(const DesignProblem& problem, const Eigen::VectorXd& x, int iterations) {
+  const TriMesh support = problem.SupportAt(x);
+  const Eigen::VectorXi& active = problem.parameterization().active_vertices();
+  std::vector<bool> fixed(static_cast<size_t>(support.vertices.rows()), true);
+  for (Eigen::Index i = 0; i < active.size(); ++i) fixed[active[i]] = false;
+  const TriMesh smoothed = TaubinSmooth(support, {0.5, -0.53, iterations}, fixed);
+  // Back to design variables: positions directly, or the displacement along the normals.
+  const SupportParameterization& p = problem.parameterization();
+  if (p.kind() == DesignParameterization::kPositions) {
+    Eigen::VectorXd y(x.size());
+    for (Eigen::Index i = 0; i < active.size(); ++i)
+      y.segment<3>(3 * i) = smoothed.vertices.row(active[i]).transpose();
+    return y;
+  }
+  const Vertices normals =
+      p.Positions(Eigen::VectorXd::Ones(x.size())) - p.Positions(Eigen::VectorXd::Zero(x.size()));
+  const Vertices base = p.Positions(Eigen::VectorXd::Zero(x.size()));
+  Eigen::VectorXd y(x.size());
+  for (Eigen::Index i = 0; i < active.size(); ++i)
+    y[i] = (smoothed.vertices.row(active[i]) - base.row(active[i])).dot(normals.row(active[i]));
+  return y;
+}
+
+Json SummaryJson(const Scenario& scenario, const DesignReport& initial,
+                 const DesignReport& optimized, const OptimizerResult& result, double gamma,
+                 double wall, double stiffness) {
+  Json s = Json::Object();
+  s["scenario"] = scenario.name;
+  s["description"] = scenario.description;
+  s["optimizer"] = result.optimizer;
+  s["initial_score"] = initial.evaluation.phi;
+  s["optimized_score"] = optimized.evaluation.phi;
+  s["reduction_percent"] = 100.0 * (1.0 - optimized.evaluation.phi / initial.evaluation.phi);
+  s["initial_zeta"] = initial.evaluation.zeta;
+  s["optimized_zeta"] = optimized.evaluation.zeta;
+  s["gamma"] = gamma;
+  s["wall_s"] = wall;
+  s["body_vertices"] = static_cast<long>(scenario.body->rest().vertices.rows());
+  s["support_vertices"] = static_cast<long>(scenario.support.vertices.rows());
+  s["contact_vertices"] = optimized.evaluation.equilibrium.contact_vertices;
+  s["initial_contact_vertices"] = initial.evaluation.equilibrium.contact_vertices;
+  s["initial_max_penetration_m"] = initial.evaluation.equilibrium.max_penetration;
+  s["optimized_max_penetration_m"] = optimized.evaluation.equilibrium.max_penetration;
+  s["initial_peak_pressure_Pa"] = initial.peak_pressure;
+  s["optimized_peak_pressure_Pa"] = optimized.peak_pressure;
+  s["contact_stiffness"] = stiffness;
+  s["evaluations"] = result.evaluations;
+  s["failed_evaluations"] = result.failed_evaluations;
+  s["newton_iterations"] = result.newton_iterations;
+  s["stop_reason"] = result.stop_reason;
+  s["load_N"] = scenario.body->TotalLoad().norm();
+  return s;
+}
+
+std::string SummaryMarkdown(const Json& s) {
+  auto number = [&](const char* key, const char* format) {
+    return Format(format, s.Find(key)->AsNumber());
+  };
+  std::ostringstream md;
+  md << "# ergo_optimize: " << s.Find("scenario")->AsString() << "\n\n"
+     << s.Find("description")->AsString() << "\n\n"
+     << "| | initial | optimised |\n|---|---|---|\n"
+     << "| score φ | " << number("initial_score", "%.4g") << " | "
+     << number("optimized_score", "%.4g") << " |\n"
+     << "| ζ (pressure term) | " << number("initial_zeta", "%.4g") << " | "
+     << number("optimized_zeta", "%.4g") << " |\n"
+     << "| peak pressure (kPa) | "
+     << Format("%.2f", s.Find("initial_peak_pressure_Pa")->AsNumber() / 1e3) << " | "
+     << Format("%.2f", s.Find("optimized_peak_pressure_Pa")->AsNumber() / 1e3) << " |\n"
+     << "| max penetration (mm) | "
+     << Format("%.3f", s.Find("initial_max_penetration_m")->AsNumber() * 1e3) << " | "
+     << Format("%.3f", s.Find("optimized_max_penetration_m")->AsNumber() * 1e3) << " |\n"
+     << "| contact vertices | " << number("initial_contact_vertices", "%.0f") << " | "
+     << number("contact_vertices", "%.0f") << " |\n\n"
+     << "Table 1 columns: reduction " << number("reduction_percent", "%.1f")
+     << " %, smoothing strength γ " << number("gamma", "%.3g") << ", time "
+     << number("wall_s", "%.1f") << " s, " << number("body_vertices", "%.0f") << " body vertices, "
+     << number("support_vertices", "%.0f") << " support vertices, "
+     << number("contact_vertices", "%.0f") << " contact vertices.\n\n"
+     << "Optimiser " << s.Find("optimizer")->AsString() << ": " << number("evaluations", "%.0f")
+     << " evaluations (" << number("failed_evaluations", "%.0f") << " failed), "
+     << number("newton_iterations", "%.0f")
+     << " Newton iterations; stopped: " << s.Find("stop_reason")->AsString() << ".\n\n"
+     << "Files: support_initial/optimized.{ply,stl} (millimetres; the STL is closed and "
+        "print-ready), "
+        "body_*.vtu and support_*.vtu (pressure_Pa, contact_force_N, displacement_m), history.csv, "
+        "pressure_maps.png, pressure_histograms.png, displacement.png, phi_history.png.\n";
+  return md.str();
+}
+
+int Run() {
+  if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
+  if (FLAGS_max_evals < 1)
+    throw InputError("--max_evals", "", "must be at least 1", "e.g. --max_evals=100");
+  Scenario scenario = ScenarioFromFlags();
+  DesignOptions& design = scenario.design;
+  if (FLAGS_exponent < 2 || FLAGS_exponent > 4)
+    throw InputError("--exponent", "", "must be 2, 3 or 4", "use --exponent=3 (the paper)");
+  if (!(FLAGS_pressure_smoothing >= 0 && FLAGS_pressure_smoothing <= 1)) {
+    throw InputError("--pressure_smoothing", "", "must lie in [0, 1]", "use 1 (the paper) or less");
+  }
+  if (FLAGS_taubin_iterations < 1)
+    throw InputError("--taubin_iterations", "", "must be at least 1", "e.g. 1");
+  design.pressure = {FLAGS_exponent, FLAGS_pressure_smoothing};
+  design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};
+  std::string error;
+  std::unique_ptr<Optimizer> optimizer = MakeOptimizer(FLAGS_optimizer, OptimizerOptions(), &error);
+  if (!optimizer)
+    throw InputError("--optimizer", "", "'" + FLAGS_optimizer + "' is unknown", error);
+  std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n"
+            << "  body " << scenario.body->rest().vertices.rows() << " vertices, support "
+            << scenario.support.vertices.rows() << " vertices, load "
+            << scenario.body->TotalLoad().norm() << " N\n";
+
+  const auto begin = std::chrono::steady_clock::now();
+  // Contact stiffness: the preset's, a number, or calibrated on the initial support.
+  if (FLAGS_contact_stiffness == "auto") {
+    EquilibriumSolver solver(*scenario.body, design.equilibrium);
+    EquilibriumResult last;
+    const CalibrationResult calibration =
+        CalibrateContactStiffness(solver, Support(scenario.support), scenario.start,
+                                  FLAGS_target_penetration, CalibrationOptions(), &last);
+    std::cout << "  stiffness calibration: " << calibration.BriefReport() << "\n";
+    design.equilibrium.contact_stiffness = solver.options().contact_stiffness;
+    if (last.converged) scenario.start = last.state;
+  } else if (FLAGS_contact_stiffness != "scenario") {
+    design.equilibrium.contact_stiffness =
+        ParsePositive(FLAGS_contact_stiffness, "contact_stiffness");
+  }
+  DesignProblem problem = scenario.MakeProblem();
+  const Eigen::VectorXd x0 = problem.InitialDesign();
+  double gamma = 0;
+  if (FLAGS_gamma == "auto") {
+    std::string message;
+    gamma = AutoGamma(problem, FLAGS_gamma_power, &message);
+    if (gamma < 0) throw InputError("--gamma", "", message, "give --gamma=VALUE explicitly");
+    std::cout << "  " << message << "\n";
+  } else {
+    gamma = ParsePositive(FLAGS_gamma, "gamma");
+  }
+  problem.set_gamma(gamma);
+  const DesignReport initial = ReportDesign(problem, x0);
+  if (!initial.evaluation.ok) {
+    std::cerr << "ergo_optimize: the initial equilibrium failed: " << initial.evaluation.message
+              << "\n";
+    return 1;
+  }
+  std::cout << "  initial φ " << initial.evaluation.phi << " (ζ " << initial.evaluation.zeta
+            << ", γψ " << gamma * initial.evaluation.psi << "), "
+            << initial.evaluation.equilibrium.contact_vertices << " contact vertices, peak "
+            << initial.peak_pressure / 1e3 << " kPa, max penetration "
+            << initial.evaluation.equilibrium.max_penetration * 1e3 << " mm\n";
+
+  // The optimisation.
+  Budget budget;
+  budget.max_evaluations = FLAGS_max_evals;
+  budget.max_seconds = FLAGS_max_seconds;
+  RunControl control;
+  control.stop = &g_stop;
+  const double phi0 = initial.evaluation.phi;
+  double best = phi0;
+  control.progress = [&](const IterationRecord& r) {
+    best = std::min(best, r.phi);
+    if (FLAGS_progress) {
+      const double per_eval =
+          r.evaluations > 0 ? r.seconds / static_cast<double>(r.evaluations) : 0;
+      double eta = per_eval * static_cast<double>(
+                                  std::max(0L, static_cast<long>(FLAGS_max_evals) - r.evaluations));
+      if (FLAGS_max_seconds > 0) eta = std::min(eta, std::max(0.0, FLAGS_max_seconds - r.seconds));
+      std::printf("iter %4d  φ/φ₀ %.4f  best %.4f  evals %4ld  elapsed %6.1f s  ETA %6.1f s\n",
+                  r.iteration, r.phi / phi0, best / phi0, r.evaluations, r.seconds, eta);
+      std::fflush(stdout);
+    }
+    return true;
+  };
+  std::signal(SIGINT, OnInterrupt);
+  DesignObjective objective(problem);
+  OptimizerResult result = optimizer->Minimize(objective, x0, budget, control);
+  std::signal(SIGINT, SIG_DFL);
+  std::cout << result.BriefReport() << "\n";
+  Eigen::VectorXd best_x = result.ok ? result.best_x : x0;
+
+  DesignReport optimized = ReportDesign(problem, best_x);
+  if (FLAGS_post_smoothing > 0 && optimized.evaluation.ok) {
+    const Eigen::VectorXd smoothed_x = PostSmooth(problem, best_x, FLAGS_post_smoothing);
+    DesignReport smoothed = ReportDesign(problem, smoothed_x);
+    std::cout << "post-smoothing (" << FLAGS_post_smoothing << " Taubin iterations): φ "
+              << optimized.evaluation.phi << " -> "
+              << (smoothed.evaluation.ok ? smoothed.evaluation.phi : NAN)
+              << (smoothed.evaluation.ok && smoothed.evaluation.phi < optimized.evaluation.phi
+                      ? " (kept)"
+                      : " (discarded)")
+              << "\n";
+    if (smoothed.evaluation.ok && smoothed.evaluation.phi < optimized.evaluation.phi)
+      optimized = std::move(smoothed);
+  }
+  if (!optimized.evaluation.ok) optimized = initial;  // nothing better was found that converged
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+
+  // Outputs.
+  std::filesystem::create_directories(FLAGS_out);
+  const std::filesystem::path out(FLAGS_out);
+  WriteDesignFiles(FLAGS_out, "initial", *scenario.body, initial, scenario.support.vertices);
+  WriteDesignFiles(FLAGS_out, "optimized", *scenario.body, optimized, scenario.support.vertices);
+  WriteHistoryCsv((out / "history.csv").string(), result);
+  const Json summary = SummaryJson(scenario, initial, optimized, result, gamma, wall,
+                                   design.equilibrium.contact_stiffness);
+  WriteJsonFile((out / "summary.json").string(), summary);
+  const std::string markdown = SummaryMarkdown(summary);
+  WriteFileAtomically((out / "summary.md").string(),
+                      [&](std::ostream& stream) { stream << markdown; });
+  WriteJsonFile((out / "plot_data.json").string(), PlotData(scenario, initial, optimized), 0);
+  if (FLAGS_plot) {
+    // Debian's python3 (where setup installs python3-matplotlib) before whatever is on PATH.
+    const std::string python =
+        std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    const std::string command =
+        python + " \"" + std::string(ERGO_TOOLS_DIR) + "/plot_results.py\" \"" + FLAGS_out + "\"";
+    const int status = std::system(command.c_str());
+    if (status != 0)
+      std::cerr << "warning: pictures not written (" << command << " exited " << status
+                << "; is python3-matplotlib installed?)\n";
+  }
+  std::cout << markdown << "wrote " << FLAGS_out << "/\n";
+  return 0;
+}
+
+}  // namespace
+}  // namespace ergo
+
+int main(int argc, char** argv) {
+  gflags::SetCommandLineOptionWithMode("scenario", "shoe", gflags::SET_FLAGS_DEFAULT);
+  gflags::SetUsageMessage(
+      "optimise a support's shape for even contact pressure\n"
+      "  ergo_optimize [--flagfile=data/SCENARIO.flags] [--optimizer=NAME] [--max_evals=N] "
+      "[--max_seconds=S] [--out=DIR]");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  try {
+    return ergo::Run();
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_optimize: " << error.what() << "\n";
+    return 2;
+  }
+}

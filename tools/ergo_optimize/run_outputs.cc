@@ -1,0 +1,154 @@
+#include "tools/ergo_optimize/run_outputs.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <Eigen/Geometry>
+
+#include "ergo/design/equilibrium_report.h"
+#include "ergo/ergonomics/pressure_statistics.h"
+#include "ergo/mesh/mesh_io.h"
+
+namespace ergo {
+namespace {
+
+// An orthonormal basis (u, v) of the plane perpendicular to the load, and axis names.
+struct View {
+  Eigen::Vector3d u, v, down;
+  std::string u_name, v_name;
+};
+
+View ViewAlongLoad(const LayeredBody& body) {
+  View view;
+  const Eigen::Vector3d load = body.TotalLoad();
+  view.down = load.norm() > 0 ? load.normalized() : Eigen::Vector3d(0, -1, 0);
+  // Prefer world axes for readable labels when the load is along one of them.
+  Eigen::Index axis;
+  view.down.cwiseAbs().maxCoeff(&axis);
+  const char* names[3] = {"x", "y", "z"};
+  const int a = static_cast<int>((axis + 1) % 3), b = static_cast<int>((axis + 2) % 3);
+  view.u = Eigen::Vector3d::Unit(std::min(a, b));
+  view.v = Eigen::Vector3d::Unit(std::max(a, b));
+  view.u = (view.u - view.u.dot(view.down) * view.down).normalized();
+  view.v = view.down.cross(view.u).normalized();
+  view.u_name = names[std::min(a, b)];
+  view.v_name = names[std::max(a, b)];
+  return view;
+}
+
+Json Points2d(const Vertices& points, const View& view) {
+  Json out = Json::Array();
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    Json p = Json::Array();
+    p.Append(points.row(i).dot(view.u.transpose()));
+    p.Append(points.row(i).dot(view.v.transpose()));
+    out.Append(p);
+  }
+  return out;
+}
+
+// Skin triangles facing the support (outward normal along the load), with vertex pressure.
+Json SkinView(const LayeredBody& body, const DesignReport& report, const View& view) {
+  const Skin& skin = body.skin();
+  const Vertices positions = DeformedPositions(body, report.evaluation.equilibrium.state);
+  const TriMesh surface = skin.RestSurface(positions);
+  Json triangles = Json::Array();
+  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(f, 0));
+    const Eigen::Vector3d b = surface.vertices.row(surface.triangles(f, 1));
+    const Eigen::Vector3d c = surface.vertices.row(surface.triangles(f, 2));
+    if ((b - a).cross(c - a).dot(view.down) <= 0) continue;
+    Json t = Json::Array();
+    for (int k = 0; k < 3; ++k) t.Append(surface.triangles(f, k));
+    triangles.Append(t);
+  }
+  Json pressure = Json::Array();
+  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i)
+    pressure.Append(report.pressures.human.pressure[i]);
+  Json out = Json::Object();
+  out["points2d"] = Points2d(surface.vertices, view);
+  out["triangles"] = triangles;
+  out["pressure"] = pressure;
+  return out;
+}
+
+}  // namespace
+
+DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
+  DesignReport report;
+  report.x = x;
+  report.support = problem.SupportAt(x);
+  report.evaluation = problem.Evaluate(x, false);
+  if (!report.evaluation.ok) return report;
+  const Support support(report.support, "support");
+  TotalPotential potential(problem.body(), problem.options().equilibrium.contact_stiffness);
+  TotalPotential::Evaluation e;
+  potential.Evaluate(report.evaluation.equilibrium.state, support, HessianKind::kExact, false,
+                     nullptr, &e);
+  ContactPressureEvaluator evaluator(problem.body(), report.support.triangles,
+                                     report.support.vertices.rows(), problem.options().pressure);
+  report.pressures = evaluator.Evaluate(e.positions, e.contacts, report.support.vertices,
+                                        potential.contact_stiffness(), false);
+  report.peak_pressure =
+      ComputePressureStatistics(report.pressures.human.pressure, problem.body().skin().rest_areas)
+          .peak;
+  return report;
+}
+
+void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
+                      const DesignReport& report, const Vertices& initial_support) {
+  const std::filesystem::path out(dir);
+  WriteDeformedBodyVtu((out / ("body_" + tag + ".vtu")).string(), body,
+                       report.evaluation.equilibrium.state, report.pressures);
+  WriteSupportVtu((out / ("support_" + tag + ".vtu")).string(), report.support, report.pressures,
+                  initial_support);
+  WriteOptions millimetres;
+  millimetres.unit = LengthUnit::kMillimetre;
+  WriteTriMesh((out / ("support_" + tag + ".ply")).string(), report.support, millimetres);
+  millimetres.encoding = Encoding::kBinary;
+  WriteTriMesh((out / ("support_" + tag + ".stl")).string(), report.support, millimetres);
+}
+
+Json PlotData(const Scenario& scenario, const DesignReport& initial,
+              const DesignReport& optimized) {
+  const LayeredBody& body = *scenario.body;
+  const View view = ViewAlongLoad(body);
+  Json data = Json::Object();
+  data["scenario"] = scenario.name;
+  Json view_json = Json::Object();
+  Json axes = Json::Array();
+  axes.Append(view.u_name);
+  axes.Append(view.v_name);
+  view_json["axes"] = axes;
+  data["view"] = view_json;
+  for (const auto& [name, report] :
+       {std::pair<const char*, const DesignReport*>{"initial", &initial},
+        std::pair<const char*, const DesignReport*>{"optimized", &optimized}}) {
+    Json entry = Json::Object();
+    entry["skin"] = SkinView(body, *report, view);
+    data[name] = entry;
+  }
+  // The designed region: support triangles whose corners are all active.
+  const std::vector<bool>& active = scenario.design.active;
+  Json triangles = Json::Array(), displacement = Json::Array();
+  for (Eigen::Index f = 0; f < initial.support.triangles.rows(); ++f) {
+    bool all = true;
+    for (int k = 0; k < 3; ++k)
+      all = all && (active.empty() || active[initial.support.triangles(f, k)]);
+    if (!all) continue;
+    Json t = Json::Array();
+    for (int k = 0; k < 3; ++k) t.Append(initial.support.triangles(f, k));
+    triangles.Append(t);
+  }
+  for (Eigen::Index v = 0; v < initial.support.vertices.rows(); ++v)
+    displacement.Append(
+        1e3 * (optimized.support.vertices.row(v) - initial.support.vertices.row(v)).norm());
+  Json support_view = Json::Object();
+  support_view["points2d"] = Points2d(initial.support.vertices, view);
+  support_view["triangles"] = triangles;
+  support_view["displacement_mm"] = displacement;
+  data["support_displacement"] = support_view;
+  return data;
+}
+
+}  // namespace ergo

@@ -1,0 +1,41 @@
+// What ergo_optimize writes for a run: for the initial and the optimised design the body
+// and support as VTU (pressure, force, displacement fields) and the support as PLY and
+// print-ready STL in millimetres; the data behind the pictures (plot_data.json, read by
+// tools/plot_results.py); and the summary with the paper's Table 1 columns. Every file is
+// written atomically.
+#pragma once
+
+#include <string>
+
+#include <Eigen/Core>
+
+#include "ergo/design/contact_pressures.h"
+#include "ergo/design/design_problem.h"
+#include "ergo/mesh/json.h"
+#include "problems/scenario.h"
+
+namespace ergo {
+
+// One design, evaluated, with the contact pressures of its equilibrium.
+struct DesignReport {
+  Eigen::VectorXd x;
+  TriMesh support;
+  DesignEvaluation evaluation;
+  ContactPressures pressures;
+  double peak_pressure = 0;  // human side, Pa
+};
+
+// Evaluates `x` on `problem` (φ only) and gathers its pressures. evaluation.ok tells
+// whether the equilibrium converged.
+DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x);
+
+// DIR/body_TAG.vtu, DIR/support_TAG.vtu (displacement from `initial_support`),
+// DIR/support_TAG.ply and DIR/support_TAG.stl (binary, millimetres).
+void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
+                      const DesignReport& report, const Vertices& initial_support);
+
+// The data tools/plot_results.py draws: skin pressure seen along the load for both designs,
+// the designed region's displacement.
+Json PlotData(const Scenario& scenario, const DesignReport& initial, const DesignReport& optimized);
+
+}  // namespace ergo
