@@ -1,0 +1,47 @@
+#include "solvers/design_objective.h"
+
+#include <cmath>
+
+namespace ergo {
+
+DesignObjective::DesignObjective(const DesignProblem& problem)
+    : problem_(std::make_unique<DesignProblem>(problem)) {}
+
+ObjectiveValue DesignObjective::Evaluate(const Eigen::VectorXd& x, bool with_gradient) {
+  last_ = problem_->Evaluate(x, with_gradient);
+  ObjectiveValue out;
+  out.ok = last_.ok;
+  out.message = last_.message;
+  out.newton_iterations = last_.equilibrium.iterations;
+  out.seconds = last_.seconds;
+  if (!last_.ok) return out;
+  out.phi = last_.phi;
+  out.zeta = last_.zeta;
+  out.psi = last_.psi;
+  if (with_gradient) out.gradient = last_.gradient;
+  return out;
+}
+
+std::unique_ptr<Objective> DesignObjective::Clone() const {
+  return std::make_unique<DesignObjective>(*problem_);
+}
+
+double DesignObjective::LargestMove(const Eigen::VectorXd& dx) const {
+  const Eigen::VectorXd moves = problem_->parameterization().VertexMoves(dx);
+  return moves.size() == 0 ? 0.0 : moves.maxCoeff();
+}
+
+double DesignObjective::BoxHalfWidthForMove(double move) const {
+  return problem_->parameterization().kind() == DesignParameterization::kPositions
+             ? move / std::sqrt(3.0)
+             : move;
+}
+
+std::string DesignObjective::Describe() const {
+  const SupportParameterization& p = problem_->parameterization();
+  return std::to_string(p.active_vertices().size()) + " support vertices, " +
+         (p.kind() == DesignParameterization::kPositions ? "positions" : "normal displacements") +
+         ", γ = " + std::to_string(problem_->options().gamma);
+}
+
+}  // namespace ergo

@@ -1,0 +1,60 @@
+#include "solvers/history_csv.h"
+
+#include <ostream>
+
+#include "ergo/mesh/atomic_file.h"
+
+namespace ergo {
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
+  WriteFileAtomically(path, [&](std::ostream& out) {
+    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step\n";
+    for (const IterationRecord& r : result.history) {
+      out << r.iteration << ',' << r.evaluations << ',' << r.newton_iterations << ',';
+      WriteDouble(out, r.seconds);
+      for (double v : {r.phi, r.zeta, r.psi}) {
+        out << ',';
+        WriteDouble(out, v);
+      }
+      out << ',';
+      if (r.gradient_norm >= 0) WriteDouble(out, r.gradient_norm);
+      out << ',';
+      WriteDouble(out, r.step);
+      out << '\n';
+    }
+  });
+}
+
+void WriteComparisonCsv(const std::string& path, const std::vector<OptimizerResult>& results) {
+  WriteFileAtomically(path, [&](std::ostream& out) {
+    out << "optimizer,initial_phi,final_phi,reduction_percent,evaluations,newton_iterations,"
+           "wall_s,stop_reason\n";
+    for (const OptimizerResult& r : results) {
+      out << CsvField(r.optimizer) << ',';
+      if (r.ok) {
+        WriteDouble(out, r.initial_phi);
+        out << ',';
+        WriteDouble(out, r.best_phi);
+        out << ',';
+        WriteDouble(out, r.ReductionPercent());
+      } else {
+        out << ",,";
+      }
+      out << ',' << r.evaluations << ',' << r.newton_iterations << ',';
+      WriteDouble(out, r.seconds);
+      out << ',' << CsvField(r.stop_reason) << '\n';
+    }
+  });
+}
+
+}  // namespace ergo

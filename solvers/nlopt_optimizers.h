@@ -1,0 +1,19 @@
+// "nlopt-mma", "nlopt-ccsaq" and "nlopt-lbfgs": NLopt's MMA, CCSA-quadratic and L-BFGS
+// (LD_MMA, LD_CCSAQ, LD_LBFGS) through its C++ API on the scaled problem (u in millimetres
+// of vertex travel, value φ/|φ(x₀)|), with bound constraints on the vertex moves: a box of
+// MoveLimits::total around x₀, and — since NLopt exposes no iteration boundary and MMA sizes
+// its first steps by the box — runs in rounds whose box of MoveLimits::per_round is
+// re-centred on the best design after each round (classic move limits; README).
+#pragma once
+
+#include <memory>
+
+#include "solvers/optimizer.h"
+
+namespace ergo {
+
+enum class NloptMethod { kMma, kCcsaq, kLbfgs };
+
+std::unique_ptr<Optimizer> MakeNloptOptimizer(NloptMethod method, const MoveLimits& limits);
+
+}  // namespace ergo
