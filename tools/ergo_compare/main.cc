@@ -1,0 +1,322 @@
+// ergo_compare: runs several outer optimisers (solvers/, paper §4.1) on one design scenario
+// with the same budget — each on a fresh problem, so no warm-start state leaks between
+// them — and compares which gets the most comfortable support soonest.
+//
+//   ergo_compare --scenario=bump --optimizers=paper-ncg,ceres-lbfgs,nlopt-mma
+//       --max_evals=200 [--max_seconds=S] --out=DIR
+//   ergo_compare --flagfile=data/chair.flags --optimizers=... --max_evals=200 --out=DIR
+//
+// Writes DIR/compare.csv, DIR/<optimizer>_history.csv and DIR/compare.png (φ/φ₀ against
+// evaluations and against seconds, by tools/plot_compare.py; skipped with a warning when
+// python3 or matplotlib is missing) and prints the table. Ctrl-C stops the running
+// optimiser cleanly with its best design so far and skips the rest.
+//
+// Exit status: 0 success, 1 an optimiser crashed, 2 bad input (flags, scenario),
+// 130 interrupted (outputs are still written).
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include "ergo/mesh/input_error.h"
+#include "solvers/design_objective.h"
+#include "solvers/history_csv.h"
+#include "solvers/optimizer.h"
+#include "tools/common/scenario_flags.h"
+
+#ifndef ERGO_TOOLS_DIR
+#define ERGO_TOOLS_DIR ""
+#endif
+
+DEFINE_string(optimizers,
+              "paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,steepest",
+              "comma-separated optimisers to compare");
+DEFINE_int32(max_evals, 200, "evaluation budget per optimiser (every φ evaluation counts)");
+DEFINE_double(max_seconds, 0, "wall-clock budget per optimiser, s; 0 = unlimited");
+DEFINE_double(gradient_tolerance, 1e-8,
+              "stop when ||grad phi||_inf * 1 mm / |phi(x0)| falls below this");
+DEFINE_double(function_tolerance, 1e-10,
+              "stop when an iteration lowers phi by less than this fraction");
+DEFINE_double(parameter_tolerance, 1e-8,
+              "stop when an iteration moves no vertex more than this, mm");
+DEFINE_string(probe_moves_mm, "0.001,0.01,0.1,0.2,0.5,0.7,1,2",
+              "paper-ncg/steepest: largest vertex move of each trial step, mm (paper §4.1)");
+DEFINE_int32(probe_threads, 0, "paper-ncg/steepest: probe threads; 0 = one per probe");
+DEFINE_int32(restart_every, 0, "paper-ncg: restart with -grad every N iterations; 0 = #parameters");
+DEFINE_double(total_move_mm, 20, "nlopt-*: no vertex moves farther than this from the start, mm");
+DEFINE_double(round_move_mm, 2,
+              "nlopt-*: no vertex moves farther than this within one round (the per-iteration "
+              "cap; the box is re-centred on the best design after each round), mm; 0 = none");
+DEFINE_int32(round_evaluations, 10, "nlopt-*: evaluations per round");
+DEFINE_int32(lbfgs_rank, 20, "ceres-lbfgs: L-BFGS memory");
+DEFINE_double(target_reduction, 70, "the table reports when each optimiser first reached this %");
+DEFINE_string(out, "", "output directory (required; created if missing)");
+DEFINE_bool(progress, true, "print one line per optimiser iteration");
+DEFINE_bool(plot, true, "write compare.png with tools/plot_compare.py (python3 + matplotlib)");
+DEFINE_string(python, "", "Python for the plot; default: python3, else /usr/bin/python3");
+DEFINE_string(plot_script, "", "plot script; default: plot_compare.py in the source tools/ dir");
+
+namespace ergo {
+namespace {
+
+constexpr char kUsage[] =
+    "compares outer optimisers on one design scenario with the same budget.\n"
+    "  ergo_compare [--flagfile=data/SCENARIO.flags | --scenario=bump [--bump_height=...]]\n"
+    "      "
+    "--optimizers=paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,steepest\n"
+    "      --max_evals=N [--max_seconds=S] --out=DIR";
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void OnInterrupt(int) {
+  interrupted.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills
+}
+
+[[noreturn]] void FlagError(const std::string& flag, const std::string& what,
+                            const std::string& fix) {
+  throw InputError("--" + flag, "", what, fix);
+}
+
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+OptimizerOptions OptionsFromFlags() {
+  OptimizerOptions options;
+  options.probes.moves.clear();
+  for (const std::string& item : SplitList(FLAGS_probe_moves_mm)) {
+    double value = 0;
+    try {
+      size_t used = 0;
+      value = std::stod(item, &used);
+      if (used != item.size()) value = -1;
+    } catch (const std::exception&) {
+      value = -1;
+    }
+    if (!(value > 0)) {
+      FlagError("probe_moves_mm", "expected positive lengths in mm, got \"" + item + "\"",
+                "e.g. --probe_moves_mm=0.001,0.01,0.1,0.2,0.5,0.7,1,2");
+    }
+    options.probes.moves.push_back(1e-3 * value);
+  }
+  if (options.probes.moves.empty()) FlagError("probe_moves_mm", "is empty", "give the moves");
+  if (FLAGS_probe_threads < 0) FlagError("probe_threads", "must be >= 0", "0 = one per probe");
+  options.probes.threads = FLAGS_probe_threads;
+  options.probes.restart_every = FLAGS_restart_every;
+  if (!(FLAGS_total_move_mm > 0)) FlagError("total_move_mm", "must be positive", "e.g. 20");
+  if (!(FLAGS_round_move_mm >= 0)) FlagError("round_move_mm", "must be >= 0", "e.g. 2");
+  if (FLAGS_round_evaluations < 1) FlagError("round_evaluations", "must be >= 1", "e.g. 10");
+  options.limits.total = 1e-3 * FLAGS_total_move_mm;
+  options.limits.per_round = 1e-3 * FLAGS_round_move_mm;
+  options.limits.round_evaluations = FLAGS_round_evaluations;
+  if (FLAGS_lbfgs_rank < 1) FlagError("lbfgs_rank", "must be >= 1", "e.g. 20");
+  options.ceres.max_lbfgs_rank = FLAGS_lbfgs_rank;
+  return options;
+}
+
+Budget BudgetFromFlags() {
+  if (FLAGS_max_evals < 1) FlagError("max_evals", "must be >= 1", "e.g. --max_evals=200");
+  if (!(FLAGS_max_seconds >= 0)) FlagError("max_seconds", "must be >= 0", "0 = unlimited");
+  Budget budget;
+  budget.max_evaluations = FLAGS_max_evals;
+  budget.max_seconds = FLAGS_max_seconds;
+  budget.gradient_tolerance = FLAGS_gradient_tolerance;
+  budget.function_tolerance = FLAGS_function_tolerance;
+  budget.parameter_tolerance = FLAGS_parameter_tolerance;
+  return budget;
+}
+
+// The first history entry at or below (1 − target) φ₀, or nullptr.
+const IterationRecord* FirstReaching(const OptimizerResult& result, double target_percent) {
+  if (!result.ok) return nullptr;
+  const double threshold = result.initial_phi * (1 - target_percent / 100);
+  for (const IterationRecord& record : result.history)
+    if (record.phi <= threshold) return &record;
+  return nullptr;
+}
+
+void PrintTable(const std::vector<OptimizerResult>& results) {
+  const std::string target = std::to_string(static_cast<int>(FLAGS_target_reduction)) + "%";
+  std::cout << "\n"
+            << std::left << std::setw(13) << "optimizer" << std::right << std::setw(13)
+            << "final phi" << std::setw(10) << "reduct %" << std::setw(7) << "evals" << std::setw(8)
+            << "newton" << std::setw(9) << "wall s" << std::setw(14) << ("evals to " + target)
+            << std::setw(15) << ("newton to " + target) << "  "
+            << "stop reason\n";
+  for (const OptimizerResult& r : results) {
+    const IterationRecord* reached = FirstReaching(r, FLAGS_target_reduction);
+    std::cout << std::left << std::setw(13) << r.optimizer << std::right << std::setprecision(5)
+              << std::setw(13) << (r.ok ? r.best_phi : 0.0) << std::fixed << std::setprecision(1)
+              << std::setw(10) << r.ReductionPercent() << std::setw(7) << r.evaluations
+              << std::setw(8) << r.newton_iterations << std::setw(9) << r.seconds
+              << std::defaultfloat << std::setw(14)
+              << (reached ? std::to_string(reached->evaluations) : "-") << std::setw(15)
+              << (reached ? std::to_string(reached->newton_iterations) : "-") << "  "
+              << r.stop_reason << "\n";
+  }
+}
+
+// Quotes a path for /bin/sh.
+std::string ShellQuote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The first Python that can import matplotlib: --python, else python3 on the PATH, else
+// Debian's /usr/bin/python3 (python3-matplotlib installs there, and a pyenv or venv python3
+// earlier on the PATH may lack it). "" if none.
+std::string PythonWithMatplotlib() {
+  std::vector<std::string> candidates;
+  if (!FLAGS_python.empty()) {
+    candidates = {FLAGS_python};
+  } else {
+    candidates = {"python3", "/usr/bin/python3"};
+  }
+  for (const std::string& python : candidates) {
+    const std::string check = ShellQuote(python) + " -c 'import matplotlib' >/dev/null 2>&1";
+    if (std::system(check.c_str()) == 0) return python;
+  }
+  return "";
+}
+
+void Plot(const std::string& out_dir) {
+  if (!FLAGS_plot) return;
+  const std::string script = !FLAGS_plot_script.empty()
+                                 ? FLAGS_plot_script
+                                 : std::string(ERGO_TOOLS_DIR) + "/plot_compare.py";
+  if (!std::filesystem::exists(script)) {
+    std::cerr << "ergo_compare: warning: plot script " << script
+              << " not found (give --plot_script); compare.png not written\n";
+    return;
+  }
+  const std::string python = PythonWithMatplotlib();
+  if (python.empty()) {
+    std::cerr << "ergo_compare: warning: no python3 with matplotlib found (Debian: apt-get "
+                 "install python3-matplotlib); compare.png not written\n";
+    return;
+  }
+  const std::string command =
+      ShellQuote(python) + " " + ShellQuote(script) + " " + ShellQuote(out_dir);
+  if (std::system(command.c_str()) != 0) {
+    std::cerr << "ergo_compare: warning: " << command << " failed; compare.png not written\n";
+    return;
+  }
+  std::cout << "wrote " << out_dir << "/compare.png\n";
+}
+
+int Compare() {
+  if (FLAGS_out.empty()) FlagError("out", "is required", "give the output directory, --out=DIR");
+  std::vector<std::string> names = SplitList(FLAGS_optimizers);
+  if (names.empty()) FlagError("optimizers", "is empty", "e.g. --optimizers=paper-ncg,steepest");
+  const OptimizerOptions options = OptionsFromFlags();
+  const Budget budget = BudgetFromFlags();
+  for (const std::string& name : names) {
+    std::string error;
+    if (!MakeOptimizer(name, options, &error)) FlagError("optimizers", error, "fix the list");
+  }
+
+  Scenario scenario;
+  try {
+    scenario = ScenarioFromFlags();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError("--scenario=" + FLAGS_scenario, "",
+                     std::string("the scenario could not be built: ") + e.what(),
+                     "check the scenario's flags");
+  }
+  std::error_code error;
+  std::filesystem::create_directories(FLAGS_out, error);
+  if (error || !std::filesystem::is_directory(FLAGS_out)) {
+    FlagError("out", "cannot create directory " + FLAGS_out + ": " + error.message(),
+              "choose a writable path");
+  }
+  std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n";
+
+  std::signal(SIGINT, OnInterrupt);
+  std::vector<OptimizerResult> results;
+  bool crashed = false;
+  for (const std::string& name : names) {
+    if (interrupted.load()) {
+      std::cout << name << ": not run (interrupted)\n";
+      continue;
+    }
+    std::unique_ptr<Optimizer> optimizer = MakeOptimizer(name, options, nullptr);
+    DesignObjective objective(scenario.MakeProblem());  // fresh: no warm starts leak
+    std::cout << "\n" << name << " on " << objective.Describe() << "\n";
+    RunControl control;
+    control.stop = &interrupted;
+    if (FLAGS_progress) {
+      control.progress = [&name](const IterationRecord& r) {
+        std::cout << "  " << name << " it " << r.iteration << ": phi " << std::setprecision(6)
+                  << r.phi << ", " << r.evaluations << " evals, " << r.newton_iterations
+                  << " newton, " << std::setprecision(3) << r.seconds << " s, step " << r.step * 1e3
+                  << " mm" << std::endl;
+        return true;
+      };
+    }
+    OptimizerResult result;
+    try {
+      result = optimizer->Minimize(objective, objective.problem().InitialDesign(), budget, control);
+    } catch (const std::exception& e) {
+      crashed = true;
+      result.optimizer = name;
+      result.stop_reason = std::string("crashed: ") + e.what();
+    }
+    std::cout << result.BriefReport() << "\n";
+    // The problem's own counters must agree with what the optimiser reported.
+    const long counted = objective.problem().counters().evaluations.load();
+    if (!crashed && counted != result.evaluations) {
+      std::cerr << "ergo_compare: warning: " << name << " reported " << result.evaluations
+                << " evaluations but the problem counted " << counted << "\n";
+    }
+    WriteHistoryCsv(FLAGS_out + "/" + name + "_history.csv", result);
+    results.push_back(std::move(result));
+  }
+  WriteComparisonCsv(FLAGS_out + "/compare.csv", results);
+  PrintTable(results);
+  std::cout << "\nwrote " << FLAGS_out << "/compare.csv and " << results.size()
+            << " history CSVs\n";
+  Plot(FLAGS_out);
+  if (crashed) return 1;
+  return interrupted.load() ? 130 : 0;
+}
+
+}  // namespace
+}  // namespace ergo
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(ergo::kUsage);
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  FLAGS_logtostderr = true;
+  if (argc != 1) {
+    std::cerr << "ergo_compare: unexpected argument `" << argv[1] << "`\nusage: " << ergo::kUsage
+              << "\n";
+    return 2;
+  }
+  try {
+    return ergo::Compare();
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_compare: " << error.what() << "\n";
+    return 2;
+  }
+}
