@@ -1,0 +1,96 @@
+#include "problems/chair_scenario.h"
+
+#include <chrono>
+#include <sstream>
+
+#include "ergo/body/core_lock.h"
+#include "ergo/mesh/input_error.h"
+
+namespace ergo {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+ChairScenarioOptions ChairScenarioOptions::FromPreset(const std::string& preset) {
+  ChairScenarioOptions o;
+  o.preset = preset;
+  if (preset == "quick") return o;
+  if (preset == "paper") {
+    o.body_edge_length = 0.019;
+    o.sliver_bound_degrees = 12;
+    o.block.top_spacing = 0.003;
+    o.block.wall_spacing = 0.02;
+    o.contact_stiffness = 8.6e3;
+    return o;
+  }
+  throw InputError("chair scenario", "preset", "unknown preset \"" + preset + "\"",
+                   "use quick or paper");
+}
+
+Scenario MakeChairScenario(const ChairScenarioOptions& o, ScenarioBuildReport* report) {
+  ScenarioBuildReport local;
+  ScenarioBuildReport& r = report != nullptr ? *report : local;
+  if (!(o.body_edge_length > 0) || !(o.contact_stiffness > 0) || !(o.free_fall_mass_scale > 0) ||
+      !(o.start_gap >= 0) || !(o.upper_body_load >= 0)) {
+    throw InputError("chair scenario", "options",
+                     "edge length, contact stiffness and free-fall scale must be positive, the "
+                     "gap and the upper-body load non-negative",
+                     "check the chair options");
+  }
+  Scenario scenario;
+  scenario.name = "chair";
+  LayeredBodyOptions load;
+  load.lock = ParseCoreLock(o.lock, "chair lock");
+  load.external_force = Eigen::Vector3d(0, -o.upper_body_load, 0);
+
+  // Body.
+  auto start = std::chrono::steady_clock::now();
+  if (o.user_body.empty()) {
+    BuilderOptions builder;
+    builder.edge_length = o.body_edge_length;
+    builder.sliver_bound_degrees = o.sliver_bound_degrees;
+    const GeneratedBody generated = BuildImplicitBody(MakeSeatedBodySpec(o.body), builder, load);
+    scenario.body = generated.body;
+    r.body = "seated body: " + DescribeGeneratedBody(generated);
+    r.layer = generated.report;
+    r.depth = generated.depth;
+    r.body_seconds = SecondsSince(start);
+  } else {
+    scenario.body = LoadUserBody(o.user_body, o.body_edge_length, load, &r);
+  }
+
+  // Support.
+  start = std::chrono::steady_clock::now();
+  const bool generated_block = o.user_support.empty();
+  scenario.support = generated_block ? MakeProfileBlock(o.block) : LoadUserSupport(o.user_support);
+  r.support_seconds = SecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "chair");
+  r.start_seconds = SecondsSince(start);
+  if (o.negative_image) {
+    UseNegativeImage(o.negative, o.start_gap, &scenario, &r);
+  }
+  std::vector<bool> active =
+      generated_block
+          ? ActiveWhere(scenario.support,
+                        [&](const Eigen::Vector3d& p) { return OnProfileBlockTop(o.block, p); })
+          : ActiveByRule(scenario.support, o.user_support.active, o.user_support.min_normal_y);
+  std::ostringstream support;
+  if (generated_block) {
+    support << "block " << o.block.width << " x " << o.block.top_y - o.block.bottom_y << " x "
+            << o.block.front_z - o.block.back_z << " m, front arc " << o.block.front_radius
+            << " m, top spacing " << o.block.top_spacing << " m";
+  } else {
+    support << "user support " << o.user_support.path;
+  }
+  FinishScenario("chair (" + o.preset + (o.negative_image ? ", negative image)" : ", flat)"),
+                 support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.parameterization,
+                 std::move(active), &scenario, &r);
+  return scenario;
+}
+
+}  // namespace ergo

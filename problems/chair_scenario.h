@@ -1,0 +1,53 @@
+// The chair (paper §5.1, Table 1, Fig. 6): a seated adult's lower back, buttocks and thighs
+// on a 0.5 × 0.2 × 0.5 m block whose front top edge is bevelled into an arc under the knees;
+// gravity only; the core moves only vertically and rotates freely; only the block's top
+// surface (flat part and arc) is designed. Starts flat, or from the negative image (the body
+// pushed 5 cm into the block and subtracted). Presets: "quick" (an optimisation in about a
+// minute here) and "paper" (≥ 10k body vertices, ≥ 25k support vertices as in Table 1).
+// SI units; y up, +z towards the knees.
+#pragma once
+
+#include <string>
+
+#include "problems/negative_image.h"
+#include "problems/profile_block.h"
+#include "problems/scenario.h"
+#include "problems/scenario_parts.h"
+#include "problems/seated_body.h"
+
+namespace ergo {
+
+struct ChairScenarioOptions {
+  std::string preset = "quick";     // the preset these values came from (for reports)
+  SeatedBodyOptions body;           // dimensions, depths, moduli, mass
+  double body_edge_length = 0.035;  // target tet edge of the body, m
+  // The body builder's sliver bound, degrees (10: perturbation is ~4× faster than at 15 and
+  // the worst dihedral angle is still ≥ 10°).
+  double sliver_bound_degrees = 10;
+  // The block: 0.5 × 0.2 × 0.5 m, top at y = 0, 6 cm arc at the front, top spacing as below.
+  ProfileBlock block{0.5, -0.25, 0.25, -0.2, 0, 0.06, 0.0125, 0.05};
+  double start_gap = 0.002;  // the body starts this far above the support, m
+  // Negative-image start instead of the flat block (paper: 5 cm).
+  bool negative_image = false;
+  NegativeImageOptions negative{0.05, 0, 3, 0.015, 10, 0.5, 0.002};
+  std::string lock = "tx,tz";  // core DOFs held (paper: vertical translation, free rotation)
+  double upper_body_load = 0;  // extra downward force on the core, N (paper: 0, gravity only)
+  // Penalty stiffness k, N/m: calibrated per preset for 0.3 mm max penetration on the flat
+  // start (see FromPreset); ergo_optimize can recalibrate (--contact_stiffness=auto).
+  double contact_stiffness = 2.3e4;
+  double free_fall_mass_scale = 1e3;  // α of K + αM in free fall, 1/s² (paper: 1e3 chair)
+  // One variable per designed vertex (its displacement along the initial normal): a third of
+  // the variables of free positions, and no tangential motion that could tangle the top.
+  DesignParameterization parameterization = DesignParameterization::kNormalDisplacement;
+  UserBodyInput user_body;        // replaces the generated body when set
+  UserSupportInput user_support;  // replaces the block when set
+
+  // "quick" or "paper"; throws InputError for anything else.
+  static ChairScenarioOptions FromPreset(const std::string& preset);
+};
+
+// Builds the scene. Throws InputError for options or files that cannot make one.
+Scenario MakeChairScenario(const ChairScenarioOptions& options,
+                           ScenarioBuildReport* report = nullptr);
+
+}  // namespace ergo

@@ -1,0 +1,196 @@
+#include "problems/scenario_parts.h"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+#include "ergo/body/body_directory.h"
+#include "ergo/body/layer_builder.h"
+#include "ergo/body/sample_interpolation.h"
+#include "ergo/contact/support.h"
+#include "ergo/equilibrium/placement.h"
+#include "ergo/mesh/input_error.h"
+#include "ergo/mesh/mesh_check.h"
+#include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/surface_geometry.h"
+
+namespace ergo {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+SampleInterpolant Field(const std::string& csv, double constant, LengthUnit unit, bool is_length,
+                        const std::string& name, const std::string& value_unit) {
+  if (csv.empty()) return SampleInterpolant::Constant(constant);
+  SampleCsvOptions options;
+  options.unit = unit;
+  options.value_is_length = is_length;
+  options.value_name = name;
+  options.value_unit = value_unit;
+  return SampleInterpolant::Fit(ReadPointSamplesCsv(csv, options));
+}
+
+}  // namespace
+
+std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double default_edge_length,
+                                          const LayeredBodyOptions& load,
+                                          ScenarioBuildReport* report) {
+  const auto start = std::chrono::steady_clock::now();
+  std::shared_ptr<LayeredBody> body;
+  std::ostringstream line;
+  if (!input.body_directory.empty()) {
+    BodyOverrides overrides;
+    if (input.total_mass >= 0) {
+      throw InputError(input.body_directory, "total mass",
+                       "a body directory carries its own masses",
+                       "set the core mass when building it (ergo_body build --core_mass)");
+    }
+    body = std::make_shared<LayeredBody>(LoadLayeredBody(input.body_directory, load, overrides));
+    line << "user body " << input.body_directory;
+  } else {
+    if (!(input.depth > 0) || !(input.youngs_modulus > 0) ||
+        !(input.poisson_ratio > -1 && input.poisson_ratio < 0.5)) {
+      throw InputError(
+          input.skin_surface, "material",
+          "depth and Young's modulus must be positive and Poisson's ratio in (-1, 0.5)",
+          "e.g. depth 0.02 m, E 1e4 Pa, nu 0.45");
+    }
+    ReadOptions read;
+    read.unit = input.unit;
+    const TriMesh skin = ReadTriMesh(input.skin_surface, read);
+    const SampleInterpolant depth =
+        Field(input.depth_csv, input.depth, input.unit, true, "depth", "m");
+    const SampleInterpolant stiffness = Field(input.stiffness_csv, input.youngs_modulus, input.unit,
+                                              false, "Young's modulus", "Pa");
+    BuilderOptions builder;
+    builder.edge_length = input.edge_length > 0 ? input.edge_length : default_edge_length;
+    const BuiltLayer built = BuildLayerFromSurface(skin, depth, builder, input.skin_surface);
+    TissueMaterial material;
+    material.youngs_modulus = InterpolateOntoTets(built, stiffness);
+    material.poisson_ratio = Eigen::VectorXd::Constant(built.mesh.tets.rows(), input.poisson_ratio);
+    LayeredBodyOptions options = load;
+    if (input.total_mass >= 0) {
+      const double tissue = options.tissue_density * built.report.layer_volume;
+      options.core_mass = input.total_mass - tissue;
+      if (!(options.core_mass > 0)) {
+        throw InputError(
+            input.skin_surface, "total mass",
+            "the total mass is not above the tissue's own mass (" + std::to_string(tissue) + " kg)",
+            "give a larger total mass");
+      }
+    }
+    body = std::make_shared<LayeredBody>(
+        LayeredBody::Create(built.mesh, built.attached, material, options, input.skin_surface));
+    line << "user skin " << input.skin_surface << " (depth " << depth.Describe() << ", E "
+         << stiffness.Describe() << ")";
+  }
+  line << ": " << body->rest().vertices.rows() << " vertices, " << body->rest().tets.rows()
+       << " tets, mass " << body->total_mass() << " kg";
+  if (report != nullptr) {
+    report->body = line.str();
+    report->body_seconds = SecondsSince(start);
+  }
+  return body;
+}
+
+TriMesh LoadUserSupport(const UserSupportInput& input) {
+  ReadOptions read;
+  read.unit = input.unit;
+  ReadDetails details;
+  const TriMesh mesh = ReadTriMesh(input.path, read, &details);
+  MeshCheckOptions check;
+  check.unit = input.unit;
+  check.require_closed = true;
+  const MeshCheckReport report = CheckTriMesh(mesh, input.path, check, &details);
+  for (const MeshIssue& issue : report.issues) {
+    if (issue.severity == Severity::kNote) continue;
+    std::string what = issue.what;
+    if (!issue.examples.empty()) what += " (e.g. " + issue.examples.front() + ")";
+    throw InputError(
+        input.path, issue.location,
+        what +
+            "; a support must be a closed, manifold, outward surface without "
+            "self-intersections",
+        issue.fix.empty() ? "repair the mesh (ergo_mesh check lists every finding)" : issue.fix);
+  }
+  return mesh;
+}
+
+std::vector<bool> ActiveByRule(const TriMesh& support, ActiveRule rule, double min_normal_y) {
+  if (rule == ActiveRule::kAll) return std::vector<bool>(support.vertices.rows(), true);
+  const Vertices normals = VertexNormals(support);
+  std::vector<bool> active(static_cast<size_t>(support.vertices.rows()));
+  for (Eigen::Index v = 0; v < support.vertices.rows(); ++v)
+    active[v] = normals(v, 1) > min_normal_y;
+  return active;
+}
+
+std::vector<bool> ActiveWhere(const TriMesh& support,
+                              const std::function<bool(const Eigen::Vector3d&)>& designed) {
+  std::vector<bool> active(static_cast<size_t>(support.vertices.rows()));
+  for (Eigen::Index v = 0; v < support.vertices.rows(); ++v)
+    active[v] = designed(support.vertices.row(v).transpose());
+  return active;
+}
+
+BodyState StartAbove(const LayeredBody& body, const TriMesh& support, double gap,
+                     const std::string& scenario) {
+  const Support surface(support, scenario + " support");
+  const PlacementResult placed = PlaceAboveSupport(body, RestState(body), surface, gap);
+  if (!placed.found) {
+    throw InputError(scenario, "start",
+                     "the body does not meet the support when moved along the load",
+                     "place the body over the support (check the units and the body's position)");
+  }
+  return placed.state;
+}
+
+void UseNegativeImage(const NegativeImageOptions& options, double gap, Scenario* scenario,
+                      ScenarioBuildReport* report) {
+  const LayeredBody& body = *scenario->body;
+  const Eigen::Vector3d lower = gap * body.TotalLoad().normalized();
+  BodyState contact = scenario->start;
+  contact.centre += lower;
+  for (Eigen::Index i = 0; i < body.free_vertices().size(); ++i)
+    contact.free_displacement.segment<3>(3 * i) += lower;
+  const NegativeImage image =
+      MakeNegativeImage(body, contact, scenario->support, options, scenario->name);
+  scenario->support = image.support;
+  scenario->start = image.start;
+  if (report != nullptr) {
+    report->negative_image = image.BriefReport();
+    report->negative_image_seconds = image.seconds;
+  }
+}
+
+void FinishScenario(const std::string& description, const std::string& support_summary,
+                    double contact_stiffness, double free_fall_mass_scale,
+                    DesignParameterization parameterization, std::vector<bool> active,
+                    Scenario* scenario, ScenarioBuildReport* report) {
+  ScenarioBuildReport& r = *report;
+  const LayeredBody& body = *scenario->body;
+  r.body_vertices = static_cast<int>(body.rest().vertices.rows());
+  r.skin_vertices = static_cast<int>(body.skin().vertices.size());
+  r.support_vertices = static_cast<int>(scenario->support.vertices.rows());
+  r.active_vertices = static_cast<int>(std::count(active.begin(), active.end(), true));
+  r.total_mass = body.total_mass();
+  r.load = body.TotalLoad();
+  std::ostringstream support;
+  support << support_summary << ": " << r.support_vertices << " vertices (" << r.active_vertices
+          << " designed)";
+  r.support = support.str();
+  std::ostringstream line;
+  line << description << ": " << r.body_vertices << " body vertices, " << r.total_mass
+       << " kg, load " << r.load.norm() << " N, " << r.support_vertices << " support vertices ("
+       << r.active_vertices << " designed), k " << contact_stiffness << " N/m";
+  scenario->description = line.str();
+  DesignOptions& design = scenario->design;
+  design.equilibrium.contact_stiffness = contact_stiffness;
+  design.equilibrium.free_fall_mass_scale = free_fall_mass_scale;
+  design.parameterization = parameterization;
+  design.active = std::move(active);
+}
+
+}  // namespace ergo

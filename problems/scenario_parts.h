@@ -1,0 +1,103 @@
+// What every scenario builder shares: a user's body or support in place of the generated one
+// (a body directory from `ergo_body build`, or a skin surface with depth and stiffness
+// samples; a support mesh file with a rule for its designed vertices), the start placement
+// just above the support (paper §3.4: the human starts slightly above the support), and the
+// build report. Files are refused with the mesh check's and the readers' messages. SI units.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ergo/body/body_state.h"
+#include "ergo/body/layered_body.h"
+#include "ergo/mesh/length_unit.h"
+#include "ergo/mesh/tri_mesh.h"
+#include "problems/implicit_body.h"
+#include "problems/negative_image.h"
+#include "problems/scenario.h"
+
+namespace ergo {
+
+// A user's body instead of the generated one.
+struct UserBodyInput {
+  std::string body_directory;  // written by `ergo_body build`; used as it is (its masses)
+  // Otherwise a skin surface (.obj .off .ply .stl .msh; open scans are capped) meshed here:
+  std::string skin_surface;
+  LengthUnit unit = LengthUnit::kMetre;  // of the surface and of the CSV coordinates and depths
+  std::string depth_csv;                 // x,y,z,depth samples; empty = constant `depth`
+  std::string stiffness_csv;             // x,y,z,E (Pa) samples; empty = constant modulus
+  double depth = 0.02;                   // m
+  double youngs_modulus = 1e4;           // Pa
+  double poisson_ratio = 0.45;
+  double edge_length = 0;  // m; 0 = the scenario's body edge length
+  double total_mass = -1;  // kg; negative = core volume × 1050 kg/m³
+  bool empty() const { return body_directory.empty() && skin_surface.empty(); }
+};
+
+// Which vertices of a user's support are designed.
+enum class ActiveRule {
+  kAll,           // every vertex
+  kUpwardFacing,  // vertices whose unit normal has y above `min_normal_y` (the top side)
+};
+
+// A user's support mesh instead of the generated one.
+struct UserSupportInput {
+  std::string path;  // closed surface: .obj .off .ply .stl .msh
+  LengthUnit unit = LengthUnit::kMetre;
+  ActiveRule active = ActiveRule::kUpwardFacing;
+  double min_normal_y = 0.5;
+  bool empty() const { return path.empty(); }
+};
+
+// Numbers of one scenario build, for reports and the README.
+struct ScenarioBuildReport {
+  std::string body;        // one line about the body (vertices, mass, layer, quality)
+  LayerBuildReport layer;  // the builder's report (generated bodies only; else zeros)
+  DepthAgreement depth;    // requested vs meshed depth (generated bodies only)
+  std::string support;     // one line about the support
+  int body_vertices = 0, skin_vertices = 0, support_vertices = 0, active_vertices = 0;
+  double total_mass = 0;                           // kg
+  Eigen::Vector3d load = Eigen::Vector3d::Zero();  // weight + external force, N
+  double body_seconds = 0, support_seconds = 0, negative_image_seconds = 0, start_seconds = 0;
+  std::string negative_image;  // one line when a negative image was made
+};
+
+// Loads or builds the user's body with the scenario's load and lock (`load`). Throws
+// InputError (the readers', the builder's or the body's) for anything unusable.
+std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double default_edge_length,
+                                          const LayeredBodyOptions& load,
+                                          ScenarioBuildReport* report);
+
+// Reads the user's support (metres after the unit) and refuses it with the mesh check's
+// first problem (open, non-manifold, self-intersecting, degenerate, wrongly oriented).
+TriMesh LoadUserSupport(const UserSupportInput& input);
+
+// Per-vertex designed flags by the rule.
+std::vector<bool> ActiveByRule(const TriMesh& support, ActiveRule rule, double min_normal_y);
+
+// Per-vertex designed flags from a predicate on the position.
+std::vector<bool> ActiveWhere(const TriMesh& support,
+                              const std::function<bool(const Eigen::Vector3d&)>& designed);
+
+// The body moved rigidly from its rest pose along the load until its skin is `gap` above the
+// support. Throws InputError naming `scenario` when the body misses the support.
+BodyState StartAbove(const LayeredBody& body, const TriMesh& support, double gap,
+                     const std::string& scenario);
+
+// Replaces scenario->support by its negative image and scenario->start by the body just
+// above it: the body is lowered from its start (`gap` above the support) to contact and
+// carved `options.depth` further in. Throws InputError as MakeNegativeImage.
+void UseNegativeImage(const NegativeImageOptions& options, double gap, Scenario* scenario,
+                      ScenarioBuildReport* report);
+
+// Fills the report's counts and one-line support summary, the scenario's description
+// (prefix + counts) and its design options (stiffness, free-fall scale, parameterisation,
+// designed vertices).
+void FinishScenario(const std::string& description, const std::string& support_summary,
+                    double contact_stiffness, double free_fall_mass_scale,
+                    DesignParameterization parameterization, std::vector<bool> active,
+                    Scenario* scenario, ScenarioBuildReport* report);
+
+}  // namespace ergo

@@ -1,0 +1,126 @@
+#include "problems/shoe_scenario.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "ergo/body/core_lock.h"
+#include "ergo/mesh/input_error.h"
+#include "problems/profile_block.h"
+
+namespace ergo {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+ShoeScenarioOptions ShoeScenarioOptions::FromPreset(const std::string& preset) {
+  ShoeScenarioOptions o;
+  o.preset = preset;
+  if (preset == "quick") return o;
+  if (preset == "paper") {
+    o.body_edge_length = 0.006;
+    o.sliver_bound_degrees = 12;
+    o.sole_top_spacing = 0.0025;
+    o.sole_wall_spacing = 0.005;
+    o.contact_stiffness = 1.32e4;
+    return o;
+  }
+  throw InputError("shoe scenario", "preset", "unknown preset \"" + preset + "\"",
+                   "use quick or paper");
+}
+
+Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* report) {
+  ScenarioBuildReport local;
+  ScenarioBuildReport& r = report != nullptr ? *report : local;
+  if (!(o.body_edge_length > 0) || !(o.contact_stiffness > 0) || !(o.free_fall_mass_scale > 0) ||
+      !(o.start_gap >= 0) || !(o.body_mass >= 0) || !(o.load_fraction >= 0) ||
+      !(o.sole_thickness > 0) || !(o.sole_margin >= 0) || !std::isfinite(o.lean_torque)) {
+    throw InputError("shoe scenario", "options",
+                     "edge length, stiffness, free-fall scale and sole thickness must be "
+                     "positive; gap, margin, body mass and load fraction non-negative; the "
+                     "torque finite",
+                     "check the shoe options");
+  }
+  Scenario scenario;
+  scenario.name = "shoe";
+  LayeredBodyOptions load;
+  load.lock = ParseCoreLock(o.lock, "shoe lock");
+  load.external_force = Eigen::Vector3d(0, -o.load_fraction * o.body_mass * 9.81, 0);
+  load.external_torque = Eigen::Vector3d(o.lean_torque, 0, 0);
+
+  auto start = std::chrono::steady_clock::now();
+  if (o.user_body.empty()) {
+    BuilderOptions builder;
+    builder.edge_length = o.body_edge_length;
+    builder.sliver_bound_degrees = o.sliver_bound_degrees;
+    const GeneratedBody generated = BuildImplicitBody(MakeFootSpec(o.foot), builder, load);
+    scenario.body = generated.body;
+    r.body = "foot: " + DescribeGeneratedBody(generated);
+    r.layer = generated.report;
+    r.depth = generated.depth;
+    r.body_seconds = SecondsSince(start);
+  } else {
+    scenario.body = LoadUserBody(o.user_body, o.body_edge_length, load, &r);
+  }
+
+  // The sole: the foot's outline (x, z) grown by the margin, top at y = 0.
+  start = std::chrono::steady_clock::now();
+  const bool generated_sole = o.user_support.empty();
+  ProfileBlock sole;
+  double shift_x = 0;
+  if (generated_sole) {
+    const Vertices& rest = scenario.body->rest().vertices;
+    const Eigen::RowVector3d lo = rest.colwise().minCoeff(), hi = rest.colwise().maxCoeff();
+    shift_x = 0.5 * (lo.x() + hi.x());
+    sole = ProfileBlock{hi.x() - lo.x() + 2 * o.sole_margin,
+                        lo.z() - o.sole_margin,
+                        hi.z() + o.sole_margin,
+                        -o.sole_thickness,
+                        0,
+                        0,
+                        o.sole_top_spacing,
+                        o.sole_wall_spacing};
+    scenario.support = MakeProfileBlock(sole);
+    scenario.support.vertices.col(0).array() += shift_x;
+  } else {
+    scenario.support = LoadUserSupport(o.user_support);
+  }
+  r.support_seconds = SecondsSince(start);
+  start = std::chrono::steady_clock::now();
+  scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "shoe");
+  r.start_seconds = SecondsSince(start);
+  if (o.negative_image) {
+    if (generated_sole && !(o.negative.depth < o.sole_thickness - 0.002)) {
+      throw InputError("shoe scenario", "negative image depth",
+                       "the foot would be pushed through the sole",
+                       "use a depth at least 2 mm below the sole thickness");
+    }
+    UseNegativeImage(o.negative, o.start_gap, &scenario, &r);
+  }
+  std::vector<bool> active =
+      generated_sole
+          ? ActiveWhere(scenario.support,
+                        [&](const Eigen::Vector3d& p) {
+                          return OnProfileBlockTop(sole, p - Eigen::Vector3d(shift_x, 0, 0));
+                        })
+          : ActiveByRule(scenario.support, o.user_support.active, o.user_support.min_normal_y);
+  std::ostringstream support;
+  if (generated_sole) {
+    support << "sole " << sole.width << " x " << o.sole_thickness << " x "
+            << sole.front_z - sole.back_z << " m, top spacing " << o.sole_top_spacing << " m";
+  } else {
+    support << "user support " << o.user_support.path;
+  }
+  std::ostringstream description;
+  description << "shoe sole (" << o.preset << (o.negative_image ? ", negative image" : ", flat")
+              << ", lean " << o.lean_torque << " N m)";
+  FinishScenario(description.str(), support.str(), o.contact_stiffness, o.free_fall_mass_scale,
+                 o.parameterization, std::move(active), &scenario, &r);
+  return scenario;
+}
+
+}  // namespace ergo

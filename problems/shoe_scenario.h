@@ -1,0 +1,49 @@
+// The shoe sole (paper §5.2, Fig. 7–8): a foot standing on a flat sole slab sized to it,
+// loaded by half of a 75 kg adult's weight as an external force on the core plus an optional
+// pitch torque for leaning (paper: "By tweaking this torque, we can simulate the effect of
+// the human body leaning forwards or backwards"); the core translates vertically and
+// pitches only; the sole's top face is designed. Starts flat or from the negative image.
+// Presets "quick" and "paper" (≥ 10k body vertices). SI units; y up, the foot along +z.
+#pragma once
+
+#include <string>
+
+#include "problems/foot_body.h"
+#include "problems/negative_image.h"
+#include "problems/scenario.h"
+#include "problems/scenario_parts.h"
+
+namespace ergo {
+
+struct ShoeScenarioOptions {
+  std::string preset = "quick";
+  FootOptions foot;                // dimensions, depths, moduli, mass
+  double body_edge_length = 0.01;  // target tet edge of the foot, m
+  double sliver_bound_degrees = 10;
+  // The sole: a slab whose top (y = 0) extends `sole_margin` beyond the foot's outline on
+  // every side (0.28 × 0.12 m for the default foot), `sole_thickness` deep.
+  double sole_thickness = 0.02, sole_margin = 0.01;           // m
+  double sole_top_spacing = 0.005, sole_wall_spacing = 0.01;  // edge lengths, m
+  double start_gap = 0.001;                                   // m
+  // Load: load_fraction × body_mass × g downwards on the core (paper: half the body weight),
+  // besides the foot's own weight; and lean_torque about +x (N·m; > 0 leans forward,
+  // loading the toes; keep |torque| ≲ load × 8 cm so the centre of pressure stays on the sole).
+  double body_mass = 75, load_fraction = 0.5, lean_torque = 0;
+  bool negative_image = false;
+  NegativeImageOptions negative{0.01, 0, 3, 0.006, 10, 0.5, 0.001};
+  std::string lock = "tx,tz,ry,rz";  // vertical translation and pitch (about x) only
+  // Penalty stiffness k, N/m, calibrated per preset for 0.3 mm max penetration (FromPreset).
+  double contact_stiffness = 3.2e4;
+  double free_fall_mass_scale = 1e6;  // paper: 1e6 shoe
+  DesignParameterization parameterization = DesignParameterization::kNormalDisplacement;
+  UserBodyInput user_body;
+  UserSupportInput user_support;
+
+  // "quick" or "paper"; throws InputError for anything else.
+  static ShoeScenarioOptions FromPreset(const std::string& preset);
+};
+
+Scenario MakeShoeScenario(const ShoeScenarioOptions& options,
+                          ScenarioBuildReport* report = nullptr);
+
+}  // namespace ergo
