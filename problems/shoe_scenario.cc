@@ -24,7 +24,7 @@ ShoeScenarioOptions ShoeScenarioOptions::FromPreset(const std::string& preset) {
   if (preset == "paper") {
     o.body_edge_length = 0.006;
     o.sliver_bound_degrees = 12;
-    o.sole_top_spacing = 0.0025;
+    o.sole_top_spacing = 0.005;
     o.sole_wall_spacing = 0.005;
     o.contact_stiffness = 1.32e4;
     return o;

@@ -69,6 +69,10 @@ struct OptimizerResult {
   double initial_phi = 0;  // φ(x₀)
   double best_phi = 0;     // φ(best_x), as evaluated
   double best_zeta = 0, best_psi = 0;
+  // A copy of the objective as it stood right after evaluating best_x. For a DesignProblem
+  // it holds the equilibrium the optimiser saw there: re-evaluating best_x on it reproduces
+  // best_phi (a fresh problem may settle into another equilibrium where several exist).
+  std::shared_ptr<Objective> best_objective;
   std::vector<IterationRecord> history;
   std::string stop_reason;      // e.g. "budget: 200 evaluations", "stalled: ..."
   long evaluations = 0;         // every φ evaluation made (probes, failures included)

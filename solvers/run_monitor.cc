@@ -81,6 +81,16 @@ bool RunMonitor::Evaluate(Objective& objective, const Eigen::VectorXd& x, bool w
     v.ok = false;
     v.message = "non-finite φ";
   }
+  // A likely new best: keep the objective's state there (cloned before anyone else uses it).
+  std::shared_ptr<Objective> snapshot;
+  if (v.ok) {
+    bool better;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      better = !has_best_ || v.phi < best_.phi;
+    }
+    if (better) snapshot = objective.Clone();
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   ++completed_;
   newton_iterations_ += v.newton_iterations;
@@ -92,6 +102,7 @@ bool RunMonitor::Evaluate(Objective& objective, const Eigen::VectorXd& x, bool w
       best_ = entry;
       best_value_ = v;
       has_best_ = true;
+      best_objective_ = snapshot ? std::move(snapshot) : objective.Clone();
     }
     log_.push_back(std::move(entry));
     if (log_.size() > kLogged) log_.pop_front();
@@ -184,6 +195,7 @@ OptimizerResult RunMonitor::Finish(const std::string& optimizer_reason) const {
     result.best_phi = best_.phi;
     result.best_zeta = best_.zeta;
     result.best_psi = best_.psi;
+    result.best_objective = best_objective_;
   }
   result.initial_phi =
       history_.empty() ? std::numeric_limits<double>::quiet_NaN() : history_.front().phi;

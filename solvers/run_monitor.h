@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -81,7 +82,8 @@ class RunMonitor {
   std::string stop_reason_;
   bool has_best_ = false;
   Logged best_;
-  ObjectiveValue best_value_;  // with its gradient, if evaluated with one
+  ObjectiveValue best_value_;                  // with its gradient, if evaluated with one
+  std::shared_ptr<Objective> best_objective_;  // cloned right after evaluating best_
   // Recent successful evaluations with everything (answers exact repeats).
   std::deque<std::pair<Eigen::VectorXd, ObjectiveValue>> remembered_;
   std::deque<Logged> log_;  // recent successful evaluations, for Lookup

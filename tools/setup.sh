@@ -52,5 +52,6 @@ if [ "$mode" = test ]; then
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
   ctest --test-dir "$build" --output-on-failure -j "$jobs"
 else
-  "$build/bin/ergo_mesh" check data/meshes/support_sphere.off --closed
+  # The main job: optimise the quick shoe sole; results, STL and pictures in ergo_out/.
+  "$build/bin/ergo_optimize" --flagfile=data/shoe.flags --out=ergo_out
 fi

@@ -7,8 +7,11 @@
 
 #include "ergo/mesh/input_error.h"
 #include "problems/bump_scenario.h"
+#include "tools/common/scene_flags.h"
 
-DEFINE_string(scenario, "bump", "the design scenario: bump (more arrive with problems/)");
+DEFINE_string(scenario, "bump",
+              "the design scenario: chair, shoe, mouse (paper §5; --preset, --negative_image) or "
+              "bump (a soft ball on a bumpy plate)");
 
 // --scenario=bump: a soft ball on a plate with a Gaussian bump (problems/bump_scenario.h).
 DEFINE_double(bump_ball_radius, 0.05, "bump: ball radius, m");
@@ -50,6 +53,9 @@ struct ScenarioEntry {
 
 const std::vector<ScenarioEntry>& Table() {
   static const std::vector<ScenarioEntry> table = {
+      {"chair", MakeChairFromFlags},
+      {"shoe", MakeShoeFromFlags},
+      {"mouse", MakeMouseFromFlags},
       {"bump", MakeBumpFromFlags},
   };
   return table;

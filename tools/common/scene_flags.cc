@@ -1,0 +1,195 @@
+#include "tools/common/scene_flags.h"
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+
+#include <gflags/gflags.h>
+
+#include "ergo/mesh/input_error.h"
+#include "problems/chair_scenario.h"
+#include "problems/mouse_scenario.h"
+#include "problems/shoe_scenario.h"
+
+// Shared by the three scenes.
+DEFINE_string(preset, "quick",
+              "chair/shoe/mouse resolution: quick (an optimisation in about a minute) or paper "
+              "(>= 10k body vertices; chair >= 25k support vertices)");
+DEFINE_bool(negative_image, false,
+            "start from the negative image: the support minus the body pushed in by "
+            "--negative_image_depth (CGAL corefinement, rim smoothed)");
+DEFINE_double(negative_image_depth, -1,
+              "how far the body is pushed into the support for the negative image, m; negative = "
+              "the scene's default (chair 0.05, shoe 0.01, mouse 0.005)");
+DEFINE_double(body_edge_length, 0, "target tet edge length of the generated body, m; 0 = preset");
+DEFINE_double(support_edge_length, 0,
+              "edge length of the designed support surface (chair/sole top spacing, mouse edge), "
+              "m; 0 = preset");
+DEFINE_double(start_gap, -1, "the body starts this far above the support, m; negative = scene's");
+DEFINE_string(lock, "",
+              "core DOFs held fixed, e.g. tx,tz (chair), tx,tz,ry,rz (shoe); empty = the scene's");
+DEFINE_string(parameterization, "normal",
+              "design variables: normal (one displacement along the initial normal per designed "
+              "vertex) or positions (three coordinates per designed vertex)");
+// A user's body instead of the generated one.
+DEFINE_string(body_dir, "", "a body directory written by `ergo_body build` (replaces the body)");
+DEFINE_string(skin, "",
+              "a skin surface (.obj .off .ply .stl .msh) meshed into a tissue layer (replaces "
+              "the body)");
+DEFINE_string(skin_unit, "m", "unit of --skin, --depth_csv and --stiffness_csv: m or mm");
+DEFINE_string(depth_csv, "", "x,y,z,depth samples of the tissue depth for --skin");
+DEFINE_string(stiffness_csv, "", "x,y,z,E samples of Young's modulus (Pa) for --skin");
+DEFINE_double(skin_depth, 0.02, "constant tissue depth for --skin without --depth_csv, m");
+DEFINE_double(skin_youngs_modulus, 1e4, "constant E for --skin without --stiffness_csv, Pa");
+DEFINE_double(skin_poisson_ratio, 0.45, "Poisson's ratio of --skin's tissue");
+DEFINE_double(skin_total_mass, -1,
+              "total mass of --skin's body part, kg; negative = core volume x "
+              "1050 kg/m^3");
+// A user's support instead of the generated one.
+DEFINE_string(support_mesh, "", "a closed support surface (.obj .off .ply .stl .msh)");
+DEFINE_string(support_unit, "m", "unit of --support_mesh: m or mm");
+DEFINE_string(designed, "up",
+              "which vertices of --support_mesh are designed: up (normal's y above "
+              "--designed_min_normal_y) or all");
+DEFINE_double(designed_min_normal_y, 0.5, "see --designed");
+// Scene-specific.
+DEFINE_double(chair_upper_body_load, 0, "chair: extra downward force on the core, N (paper: 0)");
+DEFINE_double(chair_front_radius, 0.06, "chair: radius of the arc under the knees, m");
+DEFINE_double(chair_body_mass, 30, "chair: mass of the seated body part, kg");
+DEFINE_double(shoe_lean_torque, 0,
+              "shoe: torque about x on the foot's core, N m (> 0 leans forward onto the toes)");
+DEFINE_double(shoe_body_mass, 75, "shoe: the wearer's mass, kg");
+DEFINE_double(shoe_load_fraction, 0.5, "shoe: fraction of the wearer's weight on this foot");
+DEFINE_double(mouse_hand_mass, 0.45, "mouse: mass of the hand, kg");
+
+namespace ergo {
+namespace {
+
+LengthUnit UnitFlag(const std::string& text, const char* flag) {
+  LengthUnit unit;
+  if (!ParseLengthUnit(text, &unit))
+    throw InputError(std::string("--") + flag, "", "'" + text + "' is not a unit", "use m or mm");
+  return unit;
+}
+
+DesignParameterization ParameterizationFlag() {
+  if (FLAGS_parameterization == "normal") return DesignParameterization::kNormalDisplacement;
+  if (FLAGS_parameterization == "positions") return DesignParameterization::kPositions;
+  throw InputError("--parameterization", "", "'" + FLAGS_parameterization + "' is unknown",
+                   "use normal or positions");
+}
+
+UserBodyInput UserBodyFlags() {
+  UserBodyInput input;
+  if (!FLAGS_body_dir.empty() && !FLAGS_skin.empty()) {
+    throw InputError("--body_dir", "", "both --body_dir and --skin are given", "give one of them");
+  }
+  input.body_directory = FLAGS_body_dir;
+  input.skin_surface = FLAGS_skin;
+  input.unit = UnitFlag(FLAGS_skin_unit, "skin_unit");
+  input.depth_csv = FLAGS_depth_csv;
+  input.stiffness_csv = FLAGS_stiffness_csv;
+  input.depth = FLAGS_skin_depth;
+  input.youngs_modulus = FLAGS_skin_youngs_modulus;
+  input.poisson_ratio = FLAGS_skin_poisson_ratio;
+  input.total_mass = FLAGS_skin_total_mass;
+  return input;
+}
+
+UserSupportInput UserSupportFlags() {
+  UserSupportInput input;
+  input.path = FLAGS_support_mesh;
+  input.unit = UnitFlag(FLAGS_support_unit, "support_unit");
+  if (FLAGS_designed == "up") {
+    input.active = ActiveRule::kUpwardFacing;
+  } else if (FLAGS_designed == "all") {
+    input.active = ActiveRule::kAll;
+  } else {
+    throw InputError("--designed", "", "'" + FLAGS_designed + "' is unknown", "use up or all");
+  }
+  input.min_normal_y = FLAGS_designed_min_normal_y;
+  return input;
+}
+
+// The flags every scene shares, applied to its options struct.
+template <typename Options>
+void ApplyCommonFlags(Options* o) {
+  o->negative_image = FLAGS_negative_image;
+  if (FLAGS_negative_image_depth >= 0) o->negative.depth = FLAGS_negative_image_depth;
+  if (FLAGS_body_edge_length < 0)
+    throw InputError("--body_edge_length", "", "must not be negative", "0 keeps the preset's");
+  if (FLAGS_body_edge_length > 0) o->body_edge_length = FLAGS_body_edge_length;
+  if (FLAGS_support_edge_length < 0)
+    throw InputError("--support_edge_length", "", "must not be negative", "0 keeps the preset's");
+  if (FLAGS_start_gap >= 0) o->start_gap = FLAGS_start_gap;
+  if (!FLAGS_lock.empty()) o->lock = FLAGS_lock;
+  o->parameterization = ParameterizationFlag();
+  o->user_body = UserBodyFlags();
+  o->user_support = UserSupportFlags();
+}
+
+// The preset's contact stiffness was calibrated for its own meshes: say so when they change.
+void WarnIfStiffnessUncalibrated(const char* scene) {
+  if (FLAGS_body_edge_length > 0 || FLAGS_support_edge_length > 0 || !FLAGS_body_dir.empty() ||
+      !FLAGS_skin.empty() || !FLAGS_support_mesh.empty()) {
+    std::cerr << "note: " << scene
+              << ": the preset's contact stiffness was calibrated for its own meshes; consider "
+                 "--contact_stiffness=auto\n";
+  }
+}
+
+void PrintReport(const ScenarioBuildReport& r) {
+  std::cout << "  " << r.body << "\n  " << r.support << "\n";
+  if (!r.negative_image.empty()) std::cout << "  negative image: " << r.negative_image << "\n";
+  std::cout << "  built in "
+            << r.body_seconds + r.support_seconds + r.negative_image_seconds + r.start_seconds
+            << " s\n";
+}
+
+}  // namespace
+
+Scenario MakeChairFromFlags() {
+  ChairScenarioOptions o = ChairScenarioOptions::FromPreset(FLAGS_preset);
+  ApplyCommonFlags(&o);
+  if (FLAGS_support_edge_length > 0) o.block.top_spacing = FLAGS_support_edge_length;
+  o.block.wall_spacing = std::max(o.block.wall_spacing, o.block.top_spacing);
+  o.upper_body_load = FLAGS_chair_upper_body_load;
+  o.block.front_radius = FLAGS_chair_front_radius;
+  o.body.total_mass = FLAGS_chair_body_mass;
+  WarnIfStiffnessUncalibrated("chair");
+  ScenarioBuildReport report;
+  Scenario scenario = MakeChairScenario(o, &report);
+  PrintReport(report);
+  return scenario;
+}
+
+Scenario MakeShoeFromFlags() {
+  ShoeScenarioOptions o = ShoeScenarioOptions::FromPreset(FLAGS_preset);
+  ApplyCommonFlags(&o);
+  if (FLAGS_support_edge_length > 0) {
+    o.sole_top_spacing = FLAGS_support_edge_length;
+    o.sole_wall_spacing = std::max(o.sole_wall_spacing, o.sole_top_spacing);
+  }
+  o.lean_torque = FLAGS_shoe_lean_torque;
+  o.body_mass = FLAGS_shoe_body_mass;
+  o.load_fraction = FLAGS_shoe_load_fraction;
+  WarnIfStiffnessUncalibrated("shoe");
+  ScenarioBuildReport report;
+  Scenario scenario = MakeShoeScenario(o, &report);
+  PrintReport(report);
+  return scenario;
+}
+
+Scenario MakeMouseFromFlags() {
+  MouseScenarioOptions o = MouseScenarioOptions::FromPreset(FLAGS_preset);
+  ApplyCommonFlags(&o);
+  if (FLAGS_support_edge_length > 0) o.mouse.edge_length = FLAGS_support_edge_length;
+  o.hand.total_mass = FLAGS_mouse_hand_mass;
+  WarnIfStiffnessUncalibrated("mouse");
+  ScenarioBuildReport report;
+  Scenario scenario = MakeMouseScenario(o, &report);
+  PrintReport(report);
+  return scenario;
+}
+
+}  // namespace ergo
