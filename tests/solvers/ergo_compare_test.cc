@@ -84,5 +84,22 @@ TEST(Solvers, ErgoCompareRejectsAnUnknownScenarioOrOptimizerWithStatus2) {
   EXPECT_NE(output.find("bump"), std::string::npos) << output;
 }
 
+// The scenario flagfiles pose the same problem to ergo_compare as to ergo_optimize: every
+// flag in them is known to both (gflags refuses unknown flags in a flagfile).
+TEST(Solvers, ErgoCompareAcceptsEveryScenarioFlagfile) {
+  for (const char* scene : {"shoe", "chair", "mouse"}) {
+    const std::string out = testing::MakeScratchDir(std::string("ergo_compare_") + scene) + "/run";
+    std::string output;
+    EXPECT_EQ(
+        RunCompare(std::string("--flagfile=") + ERGO_SOURCE_DIR + "/data/" + scene +
+                       ".flags --optimizers=steepest --max_evals=1 --progress=false --out=" + out,
+                   &output),
+        0)
+        << output;
+    EXPECT_NE(output.find("scenario " + std::string(scene)), std::string::npos) << output;
+    EXPECT_NE(output.find("γ = κ·10^-1"), std::string::npos) << output;
+  }
+}
+
 }  // namespace
 }  // namespace ergo

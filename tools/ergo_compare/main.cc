@@ -32,6 +32,7 @@
 #include "solvers/design_objective.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
+#include "tools/common/design_flags.h"
 #include "tools/common/scenario_flags.h"
 
 #ifndef ERGO_TOOLS_DIR
@@ -250,6 +251,14 @@ int Compare() {
               "choose a writable path");
   }
   std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n";
+  // The same problem as ergo_optimize poses from the same flags (γ fixed once, on x₀).
+  ApplyDesignFlags(&scenario);
+  double gamma = 0;
+  {
+    DesignProblem probe = scenario.MakeProblem();
+    gamma = ApplyGammaFlags(&probe);
+  }
+  scenario.design.gamma = gamma;
 
   std::signal(SIGINT, OnInterrupt);
   std::vector<OptimizerResult> results;

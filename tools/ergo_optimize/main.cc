@@ -19,7 +19,6 @@
 #include <glog/logging.h>
 #include <omp.h>
 
-#include "ergo/equilibrium/calibrate_contact_stiffness.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
@@ -27,6 +26,7 @@
 #include "solvers/design_objective.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
+#include "tools/common/design_flags.h"
 #include "tools/common/scenario_flags.h"
 #include "tools/ergo_optimize/run_outputs.h"
 
@@ -40,18 +40,6 @@ DEFINE_string(
 DEFINE_int32(max_evals, 100, "budget: φ evaluations (equilibrium solves), probes included");
 DEFINE_double(max_seconds, 0, "budget: wall seconds; 0 = unlimited");
 DEFINE_string(out, "ergo_out", "output directory (created if missing)");
-DEFINE_int32(exponent, 3, "pressure exponent e of ζ = Σ s P̄^e (2, 3 or 4)");
-DEFINE_double(pressure_smoothing, 1.0, "λ_p of P̄ = (I − λ_p L) P, in [0, 1] (1 = the paper)");
-DEFINE_string(gamma, "auto",
-              "weight γ of the smoothness term ψ, or auto: κ·10^gamma_power with ζ(x₀) = κψ(x₀)");
-DEFINE_int32(gamma_power, -1, "j in γ = κ·10^j when --gamma=auto");
-DEFINE_double(taubin_lambda, 0.5, "ψ's Taubin λ");
-DEFINE_double(taubin_mu, -0.53, "ψ's Taubin μ");
-DEFINE_int32(taubin_iterations, 1, "ψ's Taubin iterations m");
-DEFINE_string(
-    contact_stiffness, "scenario",
-    "penalty k in N/m, auto (calibrate to --target_penetration), or scenario (the preset's)");
-DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
 DEFINE_int32(post_smoothing, 0,
              "Taubin iterations applied to the optimised design's designed region (paper §5.1; "
              "chair: a few)");
@@ -68,16 +56,6 @@ std::atomic<bool> g_stop{false};
 void OnInterrupt(int) {
   g_stop = true;
   std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills
-}
-
-double ParsePositive(const std::string& text, const std::string& flag) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !(value >= 0) || !std::isfinite(value)) {
-    throw InputError("--" + flag, "", "'" + text + "' is not a non-negative number",
-                     "see ergo_optimize --help");
-  }
-  return value;
 }
 
 std::string Format(const char* format, double value) {
@@ -195,52 +173,18 @@ int Run() {
   if (FLAGS_max_evals < 1)
     throw InputError("--max_evals", "", "must be at least 1", "e.g. --max_evals=100");
   Scenario scenario = ScenarioFromFlags();
-  DesignOptions& design = scenario.design;
-  if (FLAGS_exponent < 2 || FLAGS_exponent > 4)
-    throw InputError("--exponent", "", "must be 2, 3 or 4", "use --exponent=3 (the paper)");
-  if (!(FLAGS_pressure_smoothing >= 0 && FLAGS_pressure_smoothing <= 1)) {
-    throw InputError("--pressure_smoothing", "", "must lie in [0, 1]", "use 1 (the paper) or less");
-  }
-  if (FLAGS_taubin_iterations < 1)
-    throw InputError("--taubin_iterations", "", "must be at least 1", "e.g. 1");
-  design.pressure = {FLAGS_exponent, FLAGS_pressure_smoothing};
-  design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};
   std::string error;
   std::unique_ptr<Optimizer> optimizer = MakeOptimizer(FLAGS_optimizer, OptimizerOptions(), &error);
   if (!optimizer)
     throw InputError("--optimizer", "", "'" + FLAGS_optimizer + "' is unknown", error);
-  std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n"
-            << "  body " << scenario.body->rest().vertices.rows() << " vertices, support "
-            << scenario.support.vertices.rows() << " vertices, load "
-            << scenario.body->TotalLoad().norm() << " N\n";
+  std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n";
 
   const auto begin = std::chrono::steady_clock::now();
-  // Contact stiffness: the preset's, a number, or calibrated on the initial support.
-  if (FLAGS_contact_stiffness == "auto") {
-    EquilibriumSolver solver(*scenario.body, design.equilibrium);
-    EquilibriumResult last;
-    const CalibrationResult calibration =
-        CalibrateContactStiffness(solver, Support(scenario.support), scenario.start,
-                                  FLAGS_target_penetration, CalibrationOptions(), &last);
-    std::cout << "  stiffness calibration: " << calibration.BriefReport() << "\n";
-    design.equilibrium.contact_stiffness = solver.options().contact_stiffness;
-    if (last.converged) scenario.start = last.state;
-  } else if (FLAGS_contact_stiffness != "scenario") {
-    design.equilibrium.contact_stiffness =
-        ParsePositive(FLAGS_contact_stiffness, "contact_stiffness");
-  }
+  ApplyDesignFlags(&scenario);  // exponent, smoothing, Taubin, contact stiffness
+  const DesignOptions& design = scenario.design;
   DesignProblem problem = scenario.MakeProblem();
   const Eigen::VectorXd x0 = problem.InitialDesign();
-  double gamma = 0;
-  if (FLAGS_gamma == "auto") {
-    std::string message;
-    gamma = AutoGamma(problem, FLAGS_gamma_power, &message);
-    if (gamma < 0) throw InputError("--gamma", "", message, "give --gamma=VALUE explicitly");
-    std::cout << "  " << message << "\n";
-  } else {
-    gamma = ParsePositive(FLAGS_gamma, "gamma");
-  }
-  problem.set_gamma(gamma);
+  const double gamma = ApplyGammaFlags(&problem);
   const DesignReport initial = ReportDesign(problem, x0);
   if (!initial.evaluation.ok) {
     std::cerr << "ergo_optimize: the initial equilibrium failed: " << initial.evaluation.message

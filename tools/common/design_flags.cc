@@ -1,0 +1,86 @@
+#include "tools/common/design_flags.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include <gflags/gflags.h>
+
+#include "ergo/contact/support.h"
+#include "ergo/equilibrium/calibrate_contact_stiffness.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/mesh/input_error.h"
+
+DEFINE_int32(exponent, 3, "pressure exponent e of ζ = Σ s P̄^e (2, 3 or 4)");
+DEFINE_double(pressure_smoothing, 1.0, "λ_p of P̄ = (I − λ_p L) P, in [0, 1] (1 = the paper)");
+DEFINE_string(gamma, "auto",
+              "weight γ of the smoothness term ψ, or auto: κ·10^gamma_power with ζ(x₀) = κψ(x₀)");
+DEFINE_int32(gamma_power, -1, "j in γ = κ·10^j when --gamma=auto");
+DEFINE_double(taubin_lambda, 0.5, "ψ's Taubin λ");
+DEFINE_double(taubin_mu, -0.53, "ψ's Taubin μ");
+DEFINE_int32(taubin_iterations, 1, "ψ's Taubin iterations m");
+DEFINE_string(
+    contact_stiffness, "scenario",
+    "penalty k in N/m, auto (calibrate to --target_penetration), or scenario (the preset's)");
+DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
+
+namespace ergo {
+namespace {
+
+double ParseNonNegative(const std::string& text, const std::string& flag) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(value >= 0) || !std::isfinite(value)) {
+    throw InputError("--" + flag, "", "'" + text + "' is not a non-negative number",
+                     "give a number, or see --help for the words it accepts");
+  }
+  return value;
+}
+
+}  // namespace
+
+void ApplyDesignFlags(Scenario* scenario) {
+  DesignOptions& design = scenario->design;
+  if (FLAGS_exponent < 2 || FLAGS_exponent > 4)
+    throw InputError("--exponent", "", "must be 2, 3 or 4", "use --exponent=3 (the paper)");
+  if (!(FLAGS_pressure_smoothing >= 0 && FLAGS_pressure_smoothing <= 1))
+    throw InputError("--pressure_smoothing", "", "must lie in [0, 1]", "use 1 (the paper) or less");
+  if (FLAGS_taubin_iterations < 1)
+    throw InputError("--taubin_iterations", "", "must be at least 1", "e.g. 1");
+  design.pressure = {FLAGS_exponent, FLAGS_pressure_smoothing};
+  design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};
+
+  if (FLAGS_contact_stiffness == "scenario") return;
+  if (FLAGS_contact_stiffness != "auto") {
+    const double k = ParseNonNegative(FLAGS_contact_stiffness, "contact_stiffness");
+    if (!(k > 0)) throw InputError("--contact_stiffness", "", "must be positive", "e.g. 2e4");
+    design.equilibrium.contact_stiffness = k;
+    return;
+  }
+  if (!(FLAGS_target_penetration > 0))
+    throw InputError("--target_penetration", "", "must be positive", "e.g. 3e-4 (0.3 mm)");
+  EquilibriumSolver solver(*scenario->body, design.equilibrium);
+  EquilibriumResult last;
+  const CalibrationResult calibration =
+      CalibrateContactStiffness(solver, Support(scenario->support), scenario->start,
+                                FLAGS_target_penetration, CalibrationOptions(), &last);
+  std::cout << "  stiffness calibration: " << calibration.BriefReport() << "\n";
+  design.equilibrium.contact_stiffness = solver.options().contact_stiffness;
+  if (last.converged) scenario->start = last.state;
+}
+
+double ApplyGammaFlags(DesignProblem* problem) {
+  double gamma = 0;
+  if (FLAGS_gamma == "auto") {
+    std::string message;
+    gamma = AutoGamma(*problem, FLAGS_gamma_power, &message);
+    if (gamma < 0) throw InputError("--gamma", "", message, "give --gamma=VALUE explicitly");
+    std::cout << "  " << message << "\n";
+  } else {
+    gamma = ParseNonNegative(FLAGS_gamma, "gamma");
+  }
+  problem->set_gamma(gamma);
+  return gamma;
+}
+
+}  // namespace ergo

@@ -1,0 +1,24 @@
+// The design problem's flags, shared by ergo_optimize and ergo_compare so that one flagfile
+// (data/SCENARIO.flags) poses the same problem to both: the pressure exponent and smoothing,
+// ψ's Taubin operator, the contact stiffness (the scenario's, a number, or calibrated), and
+// the smoothness weight γ (a number, or auto: κ·10^j with ζ(x₀) = κψ(x₀)).
+#pragma once
+
+#include <string>
+
+#include "ergo/design/design_problem.h"
+#include "problems/scenario.h"
+
+namespace ergo {
+
+// Applies --exponent, --pressure_smoothing, --taubin_* and --contact_stiffness to
+// scenario->design (calibrating k on the initial support for --contact_stiffness=auto, which
+// also moves scenario->start to the calibrated equilibrium). Prints what it decided.
+// Throws InputError naming the flag for unusable values.
+void ApplyDesignFlags(Scenario* scenario);
+
+// γ from --gamma/--gamma_power, set on `problem` and returned. Prints how it was chosen.
+// Throws InputError when auto cannot be computed (e.g. ψ(x₀) = 0).
+double ApplyGammaFlags(DesignProblem* problem);
+
+}  // namespace ergo
