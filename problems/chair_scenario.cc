@@ -7,14 +7,6 @@
 #include "ergo/mesh/input_error.h"
 
 namespace ergo {
-namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
-
 ChairScenarioOptions ChairScenarioOptions::FromPreset(const std::string& preset) {
   ChairScenarioOptions o;
   o.preset = preset;
@@ -48,23 +40,12 @@ Scenario MakeChairScenario(const ChairScenarioOptions& o, ScenarioBuildReport* r
   load.external_force = Eigen::Vector3d(0, -o.upper_body_load, 0);
 
   // Body.
-  auto start = std::chrono::steady_clock::now();
-  if (o.user_body.empty()) {
-    BuilderOptions builder;
-    builder.edge_length = o.body_edge_length;
-    builder.sliver_bound_degrees = o.sliver_bound_degrees;
-    const GeneratedBody generated = BuildImplicitBody(MakeSeatedBodySpec(o.body), builder, load);
-    scenario.body = generated.body;
-    r.body = "seated body: " + DescribeGeneratedBody(generated);
-    r.layer = generated.report;
-    r.depth = generated.depth;
-    r.body_seconds = SecondsSince(start);
-  } else {
-    scenario.body = LoadUserBody(o.user_body, o.body_edge_length, load, &r);
-  }
+  scenario.body = MakeScenarioBody(
+      "seated body", [&] { return MakeSeatedBodySpec(o.body); }, o.body_edge_length,
+      o.sliver_bound_degrees, o.user_body, load, &r);
 
   // Support.
-  start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   const bool generated_block = o.user_support.empty();
   scenario.support = generated_block ? MakeProfileBlock(o.block) : LoadUserSupport(o.user_support);
   r.support_seconds = SecondsSince(start);

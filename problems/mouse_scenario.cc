@@ -14,10 +14,6 @@
 namespace ergo {
 namespace {
 
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // An icosphere whose edges (≈ 1.05 r / 2^s) are at most `edge`.
 TriMesh FineSphere(const Ball& ball, double edge) {
   const int subdivisions =
@@ -84,23 +80,14 @@ Scenario MakeMouseScenario(const MouseScenarioOptions& o, ScenarioBuildReport* r
   LayeredBodyOptions load;
   load.lock = ParseCoreLock(o.lock, "mouse lock");
 
-  auto start = std::chrono::steady_clock::now();
-  if (o.user_body.empty()) {
-    BuilderOptions builder;
-    builder.edge_length = o.body_edge_length;
-    builder.sliver_bound_degrees = o.sliver_bound_degrees;
-    const GeneratedBody generated =
-        BuildImplicitBody(MakeHandSpec(o.hand, {o.mouse.rear, o.mouse.front}), builder, load);
-    scenario.body = generated.body;
-    r.body = "hand: " + DescribeGeneratedBody(generated);
-    r.layer = generated.report;
-    r.depth = generated.depth;
-    r.body_seconds = SecondsSince(start);
-  } else {
-    scenario.body = LoadUserBody(o.user_body, o.body_edge_length, load, &r);
-  }
+  scenario.body = MakeScenarioBody(
+      "hand",
+      [&] {
+        return MakeHandSpec(o.hand, {o.mouse.rear, o.mouse.front});
+      },
+      o.body_edge_length, o.sliver_bound_degrees, o.user_body, load, &r);
 
-  start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   const bool generated_mouse = o.user_support.empty();
   scenario.support = generated_mouse ? MakeTwoBallMouse(o.mouse) : LoadUserSupport(o.user_support);
   r.support_seconds = SecondsSince(start);

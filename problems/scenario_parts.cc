@@ -17,10 +17,6 @@
 namespace ergo {
 namespace {
 
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 SampleInterpolant Field(const std::string& csv, double constant, LengthUnit unit, bool is_length,
                         const std::string& name, const std::string& value_unit) {
   if (csv.empty()) return SampleInterpolant::Constant(constant);
@@ -33,6 +29,29 @@ SampleInterpolant Field(const std::string& csv, double constant, LengthUnit unit
 }
 
 }  // namespace
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::shared_ptr<const LayeredBody> MakeScenarioBody(const std::string& label,
+                                                    const std::function<ImplicitBodySpec()>& spec,
+                                                    double edge_length, double sliver_bound_degrees,
+                                                    const UserBodyInput& user,
+                                                    const LayeredBodyOptions& load,
+                                                    ScenarioBuildReport* report) {
+  if (!user.empty()) return LoadUserBody(user, edge_length, load, report);
+  const auto start = std::chrono::steady_clock::now();
+  BuilderOptions builder;
+  builder.edge_length = edge_length;
+  builder.sliver_bound_degrees = sliver_bound_degrees;
+  const GeneratedBody generated = BuildImplicitBody(spec(), builder, load);
+  report->body = label + ": " + DescribeGeneratedBody(generated);
+  report->layer = generated.report;
+  report->depth = generated.depth;
+  report->body_seconds = SecondsSince(start);
+  return generated.body;
+}
 
 std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double default_edge_length,
                                           const LayeredBodyOptions& load,

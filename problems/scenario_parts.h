@@ -5,6 +5,7 @@
 // build report. Files are refused with the mesh check's and the readers' messages. SI units.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -63,6 +64,19 @@ struct ScenarioBuildReport {
   double body_seconds = 0, support_seconds = 0, negative_image_seconds = 0, start_seconds = 0;
   std::string negative_image;  // one line when a negative image was made
 };
+
+// Seconds since `start` (the build report's timings).
+double SecondsSince(std::chrono::steady_clock::time_point start);
+
+// The scenario's body: the user's when `user` is set, else `spec()` meshed by the body
+// builder with the edge length and sliver bound (`label` starts the report's body line).
+// Fills the report's body line, layer and depth reports and seconds.
+std::shared_ptr<const LayeredBody> MakeScenarioBody(const std::string& label,
+                                                    const std::function<ImplicitBodySpec()>& spec,
+                                                    double edge_length, double sliver_bound_degrees,
+                                                    const UserBodyInput& user,
+                                                    const LayeredBodyOptions& load,
+                                                    ScenarioBuildReport* report);
 
 // Loads or builds the user's body with the scenario's load and lock (`load`). Throws
 // InputError (the readers', the builder's or the body's) for anything unusable.

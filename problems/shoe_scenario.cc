@@ -9,14 +9,6 @@
 #include "problems/profile_block.h"
 
 namespace ergo {
-namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
-
 ShoeScenarioOptions ShoeScenarioOptions::FromPreset(const std::string& preset) {
   ShoeScenarioOptions o;
   o.preset = preset;
@@ -52,23 +44,12 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   load.external_force = Eigen::Vector3d(0, -o.load_fraction * o.body_mass * 9.81, 0);
   load.external_torque = Eigen::Vector3d(o.lean_torque, 0, 0);
 
-  auto start = std::chrono::steady_clock::now();
-  if (o.user_body.empty()) {
-    BuilderOptions builder;
-    builder.edge_length = o.body_edge_length;
-    builder.sliver_bound_degrees = o.sliver_bound_degrees;
-    const GeneratedBody generated = BuildImplicitBody(MakeFootSpec(o.foot), builder, load);
-    scenario.body = generated.body;
-    r.body = "foot: " + DescribeGeneratedBody(generated);
-    r.layer = generated.report;
-    r.depth = generated.depth;
-    r.body_seconds = SecondsSince(start);
-  } else {
-    scenario.body = LoadUserBody(o.user_body, o.body_edge_length, load, &r);
-  }
+  scenario.body = MakeScenarioBody(
+      "foot", [&] { return MakeFootSpec(o.foot); }, o.body_edge_length, o.sliver_bound_degrees,
+      o.user_body, load, &r);
 
   // The sole: the foot's outline (x, z) grown by the margin, top at y = 0.
-  start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   const bool generated_sole = o.user_support.empty();
   ProfileBlock sole;
   double shift_x = 0;
