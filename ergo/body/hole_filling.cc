@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
@@ -120,14 +121,7 @@ CappedSurface CloseWithFlatCaps(const TriMesh& surface, const std::string& sourc
     ++row;
   }
   // Outward orientation: the enclosed signed volume must be positive.
-  double volume = 0;
-  for (Eigen::Index f = 0; f < result.surface.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = result.surface.vertices.row(result.surface.triangles(f, 0));
-    const Eigen::Vector3d b = result.surface.vertices.row(result.surface.triangles(f, 1));
-    const Eigen::Vector3d c = result.surface.vertices.row(result.surface.triangles(f, 2));
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  if (volume < 0) {
+  if (EnclosedVolume(result.surface) < 0) {
     result.surface.triangles.col(1).swap(result.surface.triangles.col(2));
     result.notes.push_back("the surface was oriented inward; its faces were reversed");
   }

@@ -12,6 +12,7 @@
 
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/self_intersection.h"
+#include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
@@ -146,13 +147,7 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source) {
   }
 
   // Orientation: counter-clockwise seen from outside encloses a positive volume.
-  double volume = 0;
-  for (Eigen::Index f = 0; f < num_triangles; ++f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
-    volume += a.dot(b.cross(c)) / 6;
-  }
+  const double volume = EnclosedVolume(mesh);
   if (!(volume > 0)) {
     std::ostringstream what;
     what << "inside-out support: the enclosed volume is " << volume

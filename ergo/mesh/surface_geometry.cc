@@ -9,6 +9,17 @@ Eigen::Vector3d Corner(const TriMesh& mesh, Eigen::Index f, int k) {
 
 }  // namespace
 
+double EnclosedVolume(const TriMesh& mesh) {
+  double volume = 0;
+  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
+    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
+    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
+    volume += a.dot(b.cross(c)) / 6.0;
+  }
+  return volume;
+}
+
 Eigen::VectorXd TriangleAreas(const TriMesh& mesh) {
   Eigen::VectorXd areas(mesh.triangles.rows());
   for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {

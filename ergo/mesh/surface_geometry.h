@@ -22,6 +22,10 @@ Eigen::VectorXd BarycentricVertexAreas(const TriMesh& mesh);
 Eigen::Matrix3d TriangleAreaGradient(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                                      const Eigen::Vector3d& p2);
 
+// Signed enclosed volume by the divergence theorem (Σ a·(b×c)/6 over the triangles): the
+// volume of a closed surface, positive iff it is oriented outward. m³.
+double EnclosedVolume(const TriMesh& mesh);
+
 // Unit vertex normals: the area-weighted average of incident face normals (sum of the
 // unnormalised cross products). A vertex in no (or only degenerate) triangles gets 0.
 Vertices VertexNormals(const TriMesh& mesh);

@@ -10,6 +10,7 @@
 #include "ergo/body/sample_interpolation.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/primitives.h"
+#include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
@@ -26,18 +27,6 @@ BuilderOptions Options() {
 }
 
 TriMesh Skin() { return MakeIcosphere(kRadius, 3); }
-
-// Enclosed volume of a closed outward surface.
-double EnclosedVolume(const TriMesh& mesh) {
-  double volume = 0;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
 
 // Six depth samples on the axes' poles of the sphere: 1.5 to 4 cm.
 PointSamples PoleSamples(const double (&values)[6]) {

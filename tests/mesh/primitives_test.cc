@@ -6,20 +6,10 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
+#include "ergo/mesh/surface_geometry.h"
+
 namespace ergo {
 namespace {
-
-// Signed volume by the divergence theorem; positive iff outward-oriented.
-double EnclosedVolume(const TriMesh& mesh) {
-  double volume = 0;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
 
 // Every directed edge appears once and its reverse once: closed and consistently oriented.
 bool ClosedAndOriented(const TriMesh& mesh) {

@@ -7,20 +7,10 @@
 #include <Eigen/Geometry>
 
 #include "ergo/mesh/primitives.h"
+#include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
-
-double EnclosedVolume(const TriMesh& mesh) {
-  double volume = 0;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
 
 TEST(Mesh, BoundaryOfASingleTetIsItsFourOutwardFaces) {
   TetMesh tet;

@@ -7,6 +7,7 @@
 
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/primitives.h"
+#include "ergo/mesh/surface_geometry.h"
 #include "problems/mesh_booleans.h"
 #include "problems/profile_block.h"
 #include "tests/problems/scenario_checks.h"
@@ -27,17 +28,6 @@ void ExpectClosedManifold(const TriMesh& mesh, const std::string& name) {
   }
 }
 
-double Volume(const TriMesh& mesh) {
-  double volume = 0;
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
-    volume += a.dot(b.cross(c)) / 6;
-  }
-  return volume;
-}
-
 TEST(Problems, BevelledBlockIsClosedWithTheArcsVolume) {
   ProfileBlock block;  // the chair's: 0.5 × 0.2 × 0.5 m, 6 cm arc
   block.top_spacing = 0.01;
@@ -47,7 +37,7 @@ TEST(Problems, BevelledBlockIsClosedWithTheArcsVolume) {
   // chords cut off r²/2 (θ − sin θ) each, θ ≈ 9°: 1.3e-4 relative at this spacing).
   const double r = block.front_radius;
   const double exact = block.width * (0.2 * 0.5 - r * r * (1 - M_PI / 4));
-  EXPECT_NEAR(Volume(mesh) / exact, 1.0, 3e-4);
+  EXPECT_NEAR(EnclosedVolume(mesh) / exact, 1.0, 3e-4);
   // The top is a grid of the spacing; the designed rule takes the top and the arc only.
   int top = 0, designed = 0;
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
@@ -67,7 +57,7 @@ TEST(Problems, BevelledBlockIsClosedWithTheArcsVolume) {
   ProfileBlock sole{0.11, -0.14, 0.14, -0.02, 0, 0, 0.005, 0.01};
   const TriMesh slab = MakeProfileBlock(sole);
   ExpectValidSupport(slab, "sole");
-  EXPECT_NEAR(Volume(slab), 0.11 * 0.28 * 0.02, 1e-12);
+  EXPECT_NEAR(EnclosedVolume(slab), 0.11 * 0.28 * 0.02, 1e-12);
   sole.front_radius = 0.03;  // taller than the slab
   EXPECT_THROW(MakeProfileBlock(sole), InputError);
 }
@@ -84,7 +74,7 @@ TEST(Problems, UnionAndDifferenceOfClosedSurfacesHaveTheAnalyticVolume) {
                       (12 * d);
   const double exact = 4.0 / 3.0 * M_PI * (std::pow(r1, 3) + std::pow(r2, 3)) - lens;
   // The icospheres' facets lose ~0.2 % of the volume.
-  EXPECT_NEAR(Volume(joined.mesh) / exact, 1.0, 5e-3);
+  EXPECT_NEAR(EnclosedVolume(joined.mesh) / exact, 1.0, 5e-3);
   // The cut is the circle where the spheres meet: x = (d² + r1² − r2²) / 2d.
   ASSERT_FALSE(joined.cut.empty());
   const double x = (d * d + r1 * r1 - r2 * r2) / (2 * d);
@@ -98,12 +88,12 @@ TEST(Problems, UnionAndDifferenceOfClosedSurfacesHaveTheAnalyticVolume) {
   ExpectClosedManifold(carved.mesh, "difference");
   const double h = 0.03;  // cap height below y = 0
   const double cap = M_PI * h * h * (3 * 0.05 - h) / 3;
-  EXPECT_NEAR((Volume(carved.mesh) - (0.008 * 0.5 - cap)) / cap, 0.0, 1e-2);
+  EXPECT_NEAR((EnclosedVolume(carved.mesh) - (0.008 * 0.5 - cap)) / cap, 0.0, 1e-2);
 
   // Isotropic remeshing keeps the shape and reaches the target edge length.
   const TriMesh remeshed = RemeshIsotropic(joined.mesh, {}, 0.006, 3);
   ExpectValidSupport(remeshed, "remeshed union");
-  EXPECT_NEAR(Volume(remeshed) / Volume(joined.mesh), 1.0, 5e-3);
+  EXPECT_NEAR(EnclosedVolume(remeshed) / EnclosedVolume(joined.mesh), 1.0, 5e-3);
 
   // An open operand is refused with a message.
   TriMesh open = a;
