@@ -38,8 +38,10 @@ fi
 jobs=$(nproc 2>/dev/null || echo 2)
 if [ "$sanitize" = 1 ]; then
   build=build-sanitize
+  # -O1 -g1: the CGAL-heavy units compile in half the time of -O2 -g (measured 77 s vs 164 s
+  # for ergo/body/hole_filling.cc) and the reports still carry file:line.
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DERGO_SANITIZE=ON \
-    -DERGO_BUILD_BENCHMARKS=OFF >/dev/null
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DERGO_BUILD_BENCHMARKS=OFF >/dev/null
 else
   build=build
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
