@@ -13,6 +13,7 @@
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/surface_geometry.h"
+#include "ergo/mesh/tet_boundary.h"
 
 namespace ergo {
 namespace {
@@ -28,7 +29,100 @@ SampleInterpolant Field(const std::string& csv, double constant, LengthUnit unit
   return SampleInterpolant::Fit(ReadPointSamplesCsv(csv, options));
 }
 
+// The tissue mass option from a requested total mass (negative: keep the core's default).
+void SetTotalMass(double total_mass, double layer_volume, const std::string& source,
+                  LayeredBodyOptions* options) {
+  if (total_mass < 0) return;
+  const double tissue = options->tissue_density * layer_volume;
+  options->core_mass = total_mass - tissue;
+  if (!(options->core_mass > 0)) {
+    throw InputError(
+        source, "total mass",
+        "the total mass is not above the tissue's own mass (" + std::to_string(tissue) + " kg)",
+        "give a larger total mass");
+  }
+}
+
+std::shared_ptr<LayeredBody> LoadUserTetMesh(const UserBodyInput& input,
+                                             const LayeredBodyOptions& load) {
+  if (!(input.youngs_modulus > 0) || !(input.poisson_ratio > -1 && input.poisson_ratio < 0.5)) {
+    throw InputError(input.tet_mesh, "material",
+                     "Young's modulus must be positive and Poisson's ratio in (-1, 0.5)",
+                     "e.g. E 1e4 Pa, nu 0.45");
+  }
+  ReadOptions read;
+  read.unit = input.unit;
+  ReadDetails details;
+  const TetMesh mesh = ReadTetMesh(input.tet_mesh, read, &details);
+  MeshCheckOptions check;
+  check.unit = input.unit;
+  const MeshCheckReport report = CheckTetMesh(mesh, input.tet_mesh, check, &details);
+  for (const MeshIssue& issue : report.issues) {
+    if (issue.severity == Severity::kNote) continue;
+    std::string what = issue.what;
+    if (!issue.examples.empty()) what += " (e.g. " + issue.examples.front() + ")";
+    throw InputError(
+        input.tet_mesh, issue.location, what,
+        issue.fix.empty() ? "repair the mesh (ergo_mesh check lists every finding)" : issue.fix);
+  }
+  std::vector<bool> attached = AttachedFromInnerBoundary(mesh, input.tet_mesh);
+  const SampleInterpolant stiffness =
+      Field(input.stiffness_csv, input.youngs_modulus, input.unit, false, "Young's modulus", "Pa");
+  TissueMaterial material;
+  material.youngs_modulus.resize(mesh.tets.rows());
+  double volume = 0;
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    Eigen::Vector3d corners[4];
+    for (int k = 0; k < 4; ++k) corners[k] = mesh.vertices.row(mesh.tets(t, k)).transpose();
+    material.youngs_modulus[t] =
+        stiffness(0.25 * (corners[0] + corners[1] + corners[2] + corners[3]));
+    volume +=
+        (corners[1] - corners[0]).dot((corners[2] - corners[0]).cross(corners[3] - corners[0])) / 6;
+  }
+  material.poisson_ratio = Eigen::VectorXd::Constant(mesh.tets.rows(), input.poisson_ratio);
+  LayeredBodyOptions options = load;
+  SetTotalMass(input.total_mass, volume, input.tet_mesh, &options);
+  return std::make_shared<LayeredBody>(
+      LayeredBody::Create(mesh, std::move(attached), material, options, input.tet_mesh));
+}
+
 }  // namespace
+
+std::vector<bool> AttachedFromInnerBoundary(const TetMesh& mesh, const std::string& source) {
+  const TetBoundary boundary = ExtractBoundary(mesh);
+  std::vector<TriMesh> components(static_cast<size_t>(boundary.component_count));
+  std::vector<std::vector<int>> faces(components.size());
+  for (Eigen::Index f = 0; f < boundary.surface.triangles.rows(); ++f)
+    faces[static_cast<size_t>(boundary.face_component[f])].push_back(static_cast<int>(f));
+  std::vector<bool> attached(static_cast<size_t>(mesh.vertices.rows()), false);
+  int outer = 0, inner = 0;
+  for (size_t c = 0; c < faces.size(); ++c) {
+    TriMesh part{boundary.surface.vertices, Triangles(faces[c].size(), 3)};
+    for (size_t i = 0; i < faces[c].size(); ++i)
+      part.triangles.row(static_cast<Eigen::Index>(i)) =
+          boundary.surface.triangles.row(faces[c][i]);
+    if (EnclosedVolume(part) > 0) {
+      ++outer;
+      continue;
+    }
+    ++inner;
+    for (Eigen::Index i = 0; i < part.triangles.size(); ++i)
+      attached[static_cast<size_t>(boundary.surface_to_tet[part.triangles(i / 3, i % 3)])] = true;
+  }
+  if (inner == 0) {
+    throw InputError(source, "boundary",
+                     "the tet mesh has no inner boundary: a body is a tissue layer around a "
+                     "cavity where the rigid core sits",
+                     "mesh the layer between the skin and the core's surface (or use --skin "
+                     "with a depth to build one)");
+  }
+  if (outer != 1) {
+    throw InputError(source, "boundary",
+                     "the tet mesh has " + std::to_string(outer) + " outer boundaries",
+                     "give one connected tissue layer");
+  }
+  return attached;
+}
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -68,6 +162,9 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
     }
     body = std::make_shared<LayeredBody>(LoadLayeredBody(input.body_directory, load, overrides));
     line << "user body " << input.body_directory;
+  } else if (!input.tet_mesh.empty()) {
+    body = LoadUserTetMesh(input, load);
+    line << "user tet mesh " << input.tet_mesh;
   } else {
     if (!(input.depth > 0) || !(input.youngs_modulus > 0) ||
         !(input.poisson_ratio > -1 && input.poisson_ratio < 0.5)) {
@@ -90,16 +187,7 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
     material.youngs_modulus = InterpolateOntoTets(built, stiffness);
     material.poisson_ratio = Eigen::VectorXd::Constant(built.mesh.tets.rows(), input.poisson_ratio);
     LayeredBodyOptions options = load;
-    if (input.total_mass >= 0) {
-      const double tissue = options.tissue_density * built.report.layer_volume;
-      options.core_mass = input.total_mass - tissue;
-      if (!(options.core_mass > 0)) {
-        throw InputError(
-            input.skin_surface, "total mass",
-            "the total mass is not above the tissue's own mass (" + std::to_string(tissue) + " kg)",
-            "give a larger total mass");
-      }
-    }
+    SetTotalMass(input.total_mass, built.report.layer_volume, input.skin_surface, &options);
     body = std::make_shared<LayeredBody>(
         LayeredBody::Create(built.mesh, built.attached, material, options, input.skin_surface));
     line << "user skin " << input.skin_surface << " (depth " << depth.Describe() << ", E "

@@ -24,17 +24,20 @@ namespace ergo {
 // A user's body instead of the generated one.
 struct UserBodyInput {
   std::string body_directory;  // written by `ergo_body build`; used as it is (its masses)
+  // Or a tet mesh of the tissue layer (.msh, .node/.ele): its outer boundary is the skin,
+  // its inner boundaries (cavities) the core's surface, whose vertices are attached.
+  std::string tet_mesh;
   // Otherwise a skin surface (.obj .off .ply .stl .msh; open scans are capped) meshed here:
   std::string skin_surface;
   LengthUnit unit = LengthUnit::kMetre;  // of the surface and of the CSV coordinates and depths
   std::string depth_csv;                 // x,y,z,depth samples; empty = constant `depth`
-  std::string stiffness_csv;             // x,y,z,E (Pa) samples; empty = constant modulus
-  double depth = 0.02;                   // m
-  double youngs_modulus = 1e4;           // Pa
+  std::string stiffness_csv;    // x,y,z,E (Pa) samples (surface or tet mesh); empty = constant
+  double depth = 0.02;          // m
+  double youngs_modulus = 1e4;  // Pa
   double poisson_ratio = 0.45;
   double edge_length = 0;  // m; 0 = the scenario's body edge length
   double total_mass = -1;  // kg; negative = core volume × 1050 kg/m³
-  bool empty() const { return body_directory.empty() && skin_surface.empty(); }
+  bool empty() const { return body_directory.empty() && tet_mesh.empty() && skin_surface.empty(); }
 };
 
 // Which vertices of a user's support are designed.
@@ -83,6 +86,11 @@ std::shared_ptr<const LayeredBody> MakeScenarioBody(const std::string& label,
 std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double default_edge_length,
                                           const LayeredBodyOptions& load,
                                           ScenarioBuildReport* report);
+
+// Attached vertices of a tissue-layer tet mesh: those on its inner boundary components (the
+// cavities left by the core: enclosed volume < 0 with outward-from-tissue faces). Throws
+// InputError naming `source` when there is no inner boundary or more than one outer one.
+std::vector<bool> AttachedFromInnerBoundary(const TetMesh& mesh, const std::string& source);
 
 // Reads the user's support (metres after the unit) and refuses it with the mesh check's
 // first problem (open, non-manifold, self-intersecting, degenerate, wrongly oriented).

@@ -109,5 +109,48 @@ TEST(Problems, ScenarioTakesAUserBodyDirectoryAndSupportFile) {
   EXPECT_THROW(MakeMouseScenario(mouse), InputError);
 }
 
+// A bare tet mesh of the tissue layer (here the same ball's, written in millimetres) is a
+// body too: the attached set is its inner boundary, so it must be the builder's attached set
+// exactly; E is the constant given, the total mass the one asked for.
+TEST(Problems, ScenarioTakesAUserTetMeshWithItsCavityAsTheCore) {
+  const std::string dir = testing::MakeScratchDir("problems_user_tets");
+  LayeredBodyOptions options;
+  const LayeredBody ball =
+      MakeSoftBall(0.04, 0.025, 1e4, 0.45, 0.01, Eigen::Vector3d(0, 0.06, 0), options);
+  WriteOptions mm;
+  mm.unit = LengthUnit::kMillimetre;
+  WriteTetMesh(dir + "/ball.msh", ball.rest(), mm);
+  WriteTriMesh(dir + "/plate.stl",
+               MakeBox(Eigen::Vector3d(-0.08, -0.02, -0.08), Eigen::Vector3d(0.08, 0, 0.08),
+                       Eigen::Vector3i(16, 2, 16)));
+
+  MouseScenarioOptions mouse = MouseScenarioOptions::FromPreset("quick");
+  mouse.user_body.tet_mesh = dir + "/ball.msh";
+  mouse.user_body.unit = LengthUnit::kMillimetre;
+  mouse.user_body.youngs_modulus = 2e4;
+  mouse.user_body.total_mass = 0.5;
+  mouse.user_support.path = dir + "/plate.stl";
+  mouse.contact_stiffness = 2e3;
+  ScenarioBuildReport report;
+  const Scenario scenario = MakeMouseScenario(mouse, &report);
+  std::cout << report.body << "\n";
+  ASSERT_EQ(scenario.body->rest().vertices.rows(), ball.rest().vertices.rows());
+  EXPECT_EQ(scenario.body->attached(), ball.attached());
+  EXPECT_NEAR(scenario.body->total_mass(), 0.5, 1e-9);
+  EXPECT_EQ(scenario.body->material().youngs_modulus.minCoeff(), 2e4);
+  EXPECT_EQ(scenario.body->material().youngs_modulus.maxCoeff(), 2e4);
+  ExpectBalancedEquilibrium(scenario, 1e-5, 2e-3);
+
+  // A solid block (no cavity for the core) is refused, naming the file.
+  const TetMesh solid = MakeTetGrid(Eigen::Vector3d(-0.02, 0.02, -0.02),
+                                    Eigen::Vector3d(0.02, 0.06, 0.02), Eigen::Vector3i(3, 3, 3));
+  WriteTetMesh(dir + "/solid.msh", solid);
+  mouse.user_body.tet_mesh = dir + "/solid.msh";
+  mouse.user_body.unit = LengthUnit::kMetre;
+  const std::string message = ExpectInputError([&] { MakeMouseScenario(mouse); });
+  EXPECT_NE(message.find("solid.msh"), std::string::npos) << message;
+  EXPECT_NE(message.find("no inner boundary"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace ergo

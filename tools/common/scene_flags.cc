@@ -33,6 +33,10 @@ DEFINE_string(parameterization, "normal",
               "vertex) or positions (three coordinates per designed vertex)");
 // A user's body instead of the generated one.
 DEFINE_string(body_dir, "", "a body directory written by `ergo_body build` (replaces the body)");
+DEFINE_string(tet_mesh, "",
+              "a tet mesh of the tissue layer (.msh, .node/.ele; replaces the body): outer "
+              "boundary = skin, inner boundary = the core's surface; units --skin_unit, E from "
+              "--stiffness_csv or --skin_youngs_modulus");
 DEFINE_string(skin, "",
               "a skin surface (.obj .off .ply .stl .msh) meshed into a tissue layer (replaces "
               "the body)");
@@ -81,10 +85,12 @@ DesignParameterization ParameterizationFlag() {
 
 UserBodyInput UserBodyFlags() {
   UserBodyInput input;
-  if (!FLAGS_body_dir.empty() && !FLAGS_skin.empty()) {
-    throw InputError("--body_dir", "", "both --body_dir and --skin are given", "give one of them");
+  if (!FLAGS_body_dir.empty() + !FLAGS_tet_mesh.empty() + !FLAGS_skin.empty() > 1) {
+    throw InputError("--body_dir", "", "more than one of --body_dir, --tet_mesh, --skin is given",
+                     "give one of them");
   }
   input.body_directory = FLAGS_body_dir;
+  input.tet_mesh = FLAGS_tet_mesh;
   input.skin_surface = FLAGS_skin;
   input.unit = UnitFlag(FLAGS_skin_unit, "skin_unit");
   input.depth_csv = FLAGS_depth_csv;
@@ -130,8 +136,11 @@ void ApplyCommonFlags(Options* o) {
 
 // The preset's contact stiffness was calibrated for its own meshes: say so when they change.
 void WarnIfStiffnessUncalibrated(const char* scene) {
+  std::string stiffness;  // --contact_stiffness lives with the design flags
+  if (gflags::GetCommandLineOption("contact_stiffness", &stiffness) && stiffness != "scenario")
+    return;
   if (FLAGS_body_edge_length > 0 || FLAGS_support_edge_length > 0 || !FLAGS_body_dir.empty() ||
-      !FLAGS_skin.empty() || !FLAGS_support_mesh.empty()) {
+      !FLAGS_tet_mesh.empty() || !FLAGS_skin.empty() || !FLAGS_support_mesh.empty()) {
     std::cerr << "note: " << scene
               << ": the preset's contact stiffness was calibrated for its own meshes; consider "
                  "--contact_stiffness=auto\n";
