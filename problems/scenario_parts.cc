@@ -29,6 +29,20 @@ SampleInterpolant Field(const std::string& csv, double constant, LengthUnit unit
   return SampleInterpolant::Fit(ReadPointSamplesCsv(csv, options));
 }
 
+// The mesh check's first finding that is more than a note, as an InputError naming `path`
+// (`why` is appended to what is wrong).
+void ThrowFirstProblem(const MeshCheckReport& report, const std::string& path,
+                       const std::string& why) {
+  for (const MeshIssue& issue : report.issues) {
+    if (issue.severity == Severity::kNote) continue;
+    std::string what = issue.what;
+    if (!issue.examples.empty()) what += " (e.g. " + issue.examples.front() + ")";
+    throw InputError(
+        path, issue.location, what + why,
+        issue.fix.empty() ? "repair the mesh (ergo_mesh check lists every finding)" : issue.fix);
+  }
+}
+
 // The tissue mass option from a requested total mass (negative: keep the core's default).
 void SetTotalMass(double total_mass, double layer_volume, const std::string& source,
                   LayeredBodyOptions* options) {
@@ -57,14 +71,7 @@ std::shared_ptr<LayeredBody> LoadUserTetMesh(const UserBodyInput& input,
   MeshCheckOptions check;
   check.unit = input.unit;
   const MeshCheckReport report = CheckTetMesh(mesh, input.tet_mesh, check, &details);
-  for (const MeshIssue& issue : report.issues) {
-    if (issue.severity == Severity::kNote) continue;
-    std::string what = issue.what;
-    if (!issue.examples.empty()) what += " (e.g. " + issue.examples.front() + ")";
-    throw InputError(
-        input.tet_mesh, issue.location, what,
-        issue.fix.empty() ? "repair the mesh (ergo_mesh check lists every finding)" : issue.fix);
-  }
+  ThrowFirstProblem(report, input.tet_mesh, "");
   std::vector<bool> attached = AttachedFromInnerBoundary(mesh, input.tet_mesh);
   const SampleInterpolant stiffness =
       Field(input.stiffness_csv, input.youngs_modulus, input.unit, false, "Young's modulus", "Pa");
@@ -211,17 +218,9 @@ TriMesh LoadUserSupport(const UserSupportInput& input) {
   check.unit = input.unit;
   check.require_closed = true;
   const MeshCheckReport report = CheckTriMesh(mesh, input.path, check, &details);
-  for (const MeshIssue& issue : report.issues) {
-    if (issue.severity == Severity::kNote) continue;
-    std::string what = issue.what;
-    if (!issue.examples.empty()) what += " (e.g. " + issue.examples.front() + ")";
-    throw InputError(
-        input.path, issue.location,
-        what +
-            "; a support must be a closed, manifold, outward surface without "
-            "self-intersections",
-        issue.fix.empty() ? "repair the mesh (ergo_mesh check lists every finding)" : issue.fix);
-  }
+  ThrowFirstProblem(report, input.path,
+                    "; a support must be a closed, manifold, outward surface without "
+                    "self-intersections");
   return mesh;
 }
 

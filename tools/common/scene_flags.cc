@@ -155,6 +155,17 @@ void PrintReport(const ScenarioBuildReport& r) {
             << " s\n";
 }
 
+// Builds the scene, printing its build report (and the stiffness note where it applies).
+template <typename Options>
+Scenario BuildAndReport(const char* scene, const Options& options,
+                        Scenario (*make)(const Options&, ScenarioBuildReport*)) {
+  WarnIfStiffnessUncalibrated(scene);
+  ScenarioBuildReport report;
+  Scenario scenario = make(options, &report);
+  PrintReport(report);
+  return scenario;
+}
+
 }  // namespace
 
 Scenario MakeChairFromFlags() {
@@ -165,11 +176,7 @@ Scenario MakeChairFromFlags() {
   o.upper_body_load = FLAGS_chair_upper_body_load;
   o.block.front_radius = FLAGS_chair_front_radius;
   o.body.total_mass = FLAGS_chair_body_mass;
-  WarnIfStiffnessUncalibrated("chair");
-  ScenarioBuildReport report;
-  Scenario scenario = MakeChairScenario(o, &report);
-  PrintReport(report);
-  return scenario;
+  return BuildAndReport("chair", o, MakeChairScenario);
 }
 
 Scenario MakeShoeFromFlags() {
@@ -182,11 +189,7 @@ Scenario MakeShoeFromFlags() {
   o.lean_torque = FLAGS_shoe_lean_torque;
   o.body_mass = FLAGS_shoe_body_mass;
   o.load_fraction = FLAGS_shoe_load_fraction;
-  WarnIfStiffnessUncalibrated("shoe");
-  ScenarioBuildReport report;
-  Scenario scenario = MakeShoeScenario(o, &report);
-  PrintReport(report);
-  return scenario;
+  return BuildAndReport("shoe", o, MakeShoeScenario);
 }
 
 Scenario MakeMouseFromFlags() {
@@ -194,11 +197,7 @@ Scenario MakeMouseFromFlags() {
   ApplyCommonFlags(&o);
   if (FLAGS_support_edge_length > 0) o.mouse.edge_length = FLAGS_support_edge_length;
   o.hand.total_mass = FLAGS_mouse_hand_mass;
-  WarnIfStiffnessUncalibrated("mouse");
-  ScenarioBuildReport report;
-  Scenario scenario = MakeMouseScenario(o, &report);
-  PrintReport(report);
-  return scenario;
+  return BuildAndReport("mouse", o, MakeMouseScenario);
 }
 
 }  // namespace ergo
