@@ -32,6 +32,7 @@
 #include "solvers/design_objective.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
+#include "tools/common/child_process.h"
 #include "tools/common/design_flags.h"
 #include "tools/common/scenario_flags.h"
 
@@ -174,30 +175,6 @@ void PrintTable(const std::vector<OptimizerResult>& results) {
   }
 }
 
-// Quotes a path for /bin/sh.
-std::string ShellQuote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-// The first Python that can import matplotlib: --python, else python3 on the PATH, else
-// Debian's /usr/bin/python3 (python3-matplotlib installs there, and a pyenv or venv python3
-// earlier on the PATH may lack it). "" if none.
-std::string PythonWithMatplotlib() {
-  std::vector<std::string> candidates;
-  if (!FLAGS_python.empty()) {
-    candidates = {FLAGS_python};
-  } else {
-    candidates = {"python3", "/usr/bin/python3"};
-  }
-  for (const std::string& python : candidates) {
-    const std::string check = ShellQuote(python) + " -c 'import matplotlib' >/dev/null 2>&1";
-    if (std::system(check.c_str()) == 0) return python;
-  }
-  return "";
-}
-
 void Plot(const std::string& out_dir) {
   if (!FLAGS_plot) return;
   const std::string script = !FLAGS_plot_script.empty()
@@ -208,16 +185,18 @@ void Plot(const std::string& out_dir) {
               << " not found (give --plot_script); compare.png not written\n";
     return;
   }
-  const std::string python = PythonWithMatplotlib();
+  const std::string python = FindPythonWithMatplotlib(FLAGS_python);
   if (python.empty()) {
     std::cerr << "ergo_compare: warning: no python3 with matplotlib found (Debian: apt-get "
                  "install python3-matplotlib); compare.png not written\n";
     return;
   }
-  const std::string command =
-      ShellQuote(python) + " " + ShellQuote(script) + " " + ShellQuote(out_dir);
-  if (std::system(command.c_str()) != 0) {
-    std::cerr << "ergo_compare: warning: " << command << " failed; compare.png not written\n";
+  // An argument vector, never a shell: --out may hold any character.
+  const std::vector<std::string> command = {python, script, out_dir};
+  const ChildProcessResult plotted = RunChildProcess(command);
+  if (!plotted.ok()) {
+    std::cerr << "ergo_compare: warning: " << CommandLineForDisplay(command) << " "
+              << plotted.Describe() << "; compare.png not written\n";
     return;
   }
   std::cout << "wrote " << out_dir << "/compare.png\n";

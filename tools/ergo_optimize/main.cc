@@ -26,6 +26,7 @@
 #include "solvers/design_objective.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
+#include "tools/common/child_process.h"
 #include "tools/common/design_flags.h"
 #include "tools/common/scenario_flags.h"
 #include "tools/ergo_optimize/run_outputs.h"
@@ -280,15 +281,19 @@ int Run() {
                       [&](std::ostream& stream) { stream << markdown; });
   WriteJsonFile((out / "plot_data.json").string(), PlotData(scenario, initial, optimized), 0);
   if (FLAGS_plot) {
-    // Debian's python3 (where setup installs python3-matplotlib) before whatever is on PATH.
-    const std::string python =
-        std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command =
-        python + " \"" + std::string(ERGO_TOOLS_DIR) + "/plot_results.py\" \"" + FLAGS_out + "\"";
-    const int status = std::system(command.c_str());
-    if (status != 0)
-      std::cerr << "warning: pictures not written (" << command << " exited " << status
-                << "; is python3-matplotlib installed?)\n";
+    // An argument vector, never a shell: --out may hold any character.
+    const std::string python = FindPythonWithMatplotlib();
+    if (python.empty()) {
+      std::cerr << "warning: pictures not written: no python3 with matplotlib found (Debian: "
+                   "apt-get install python3-matplotlib)\n";
+    } else {
+      const std::vector<std::string> command = {
+          python, std::string(ERGO_TOOLS_DIR) + "/plot_results.py", FLAGS_out};
+      const ChildProcessResult plotted = RunChildProcess(command);
+      if (!plotted.ok())
+        std::cerr << "warning: pictures not written: " << CommandLineForDisplay(command) << " "
+                  << plotted.Describe() << "\n";
+    }
   }
   std::cout << markdown << "wrote " << FLAGS_out << "/\n";
   return 0;

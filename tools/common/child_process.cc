@@ -1,0 +1,91 @@
+#include "tools/common/child_process.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace ergo {
+
+std::string ChildProcessResult::Describe() const {
+  if (!started) return "could not be started: " + error;
+  if (signal != 0)
+    return "was ended by signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
+  return "exited " + std::to_string(exit_code);
+}
+
+ChildProcessResult RunChildProcess(const std::vector<std::string>& argv, bool quiet) {
+  ChildProcessResult result;
+  if (argv.empty() || argv[0].empty()) {
+    result.error = "no program given";
+    return result;
+  }
+  std::vector<char*> args;
+  args.reserve(argv.size() + 1);
+  for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+  args.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  }
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) {
+    result.error = argv[0] + ": " + std::strerror(spawned);
+    return result;
+  }
+  result.started = true;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) {
+      result.error = std::string("waitpid: ") + std::strerror(errno);
+      result.started = false;
+      return result;
+    }
+  }
+  if (WIFEXITED(status)) {
+    result.exit_code = WEXITSTATUS(status);
+  } else if (WIFSIGNALED(status)) {
+    result.signal = WTERMSIG(status);
+  }
+  return result;
+}
+
+std::string CommandLineForDisplay(const std::vector<std::string>& argv) {
+  std::string line;
+  for (const std::string& arg : argv) {
+    if (!line.empty()) line += ' ';
+    const bool plain =
+        !arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_-./=:,+@%") == std::string::npos;
+    if (plain) {
+      line += arg;
+      continue;
+    }
+    line += '\'';
+    for (char c : arg) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    line += '\'';
+  }
+  return line;
+}
+
+std::string FindPythonWithMatplotlib(const std::string& preferred) {
+  const std::vector<std::string> candidates =
+      preferred.empty() ? std::vector<std::string>{"python3", "/usr/bin/python3"}
+                        : std::vector<std::string>{preferred};
+  for (const std::string& python : candidates) {
+    if (RunChildProcess({python, "-c", "import matplotlib"}, /*quiet=*/true).ok()) return python;
+  }
+  return "";
+}
+
+}  // namespace ergo
