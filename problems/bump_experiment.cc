@@ -40,15 +40,12 @@ std::vector<BumpSweepPoint> RunBumpFrequencySweep(const BumpScenarioOptions& bas
     if (result.converged) {
       warm = result.state;
       have_warm = true;
-      TotalPotential::Evaluation e;
-      solver.potential().Evaluate(result.state, support, HessianKind::kExact, false, nullptr, &e);
       for (int exponent : {2, 3, 4}) {
-        ContactPressureEvaluator evaluator(*scenario.body, scenario.support.triangles,
-                                           scenario.support.vertices.rows(),
-                                           PressureCostOptions{exponent, 1.0});
+        const ContactPressureEvaluator evaluator(*scenario.body, scenario.support.triangles,
+                                                 scenario.support.vertices.rows(),
+                                                 PressureCostOptions{exponent, 1.0});
         const ContactPressures pressures =
-            evaluator.Evaluate(e.positions, e.contacts, scenario.support.vertices,
-                               solver.options().contact_stiffness, false);
+            evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
         point.zeta[exponent - 2] = pressures.human.cost + pressures.support.cost;
         if (exponent == 3) {
           point.peak_pressure =

@@ -22,7 +22,7 @@ struct BumpScenarioOptions {
   double bump_height = 0.004;      // m
   double bump_width = 0.015;       // Gaussian σ, m (spatial frequency ~ 1/width)
   Eigen::Vector2d bump_centre = Eigen::Vector2d(0.012, 0.004);  // (x, z), m
-  double contact_stiffness = 2e3;  // N/m (≈ 0.3 mm penetration for this ball)
+  double contact_stiffness = 3e7;  // κ, Pa/m (≈ 0.3 mm penetration for this ball)
   double drop_height = 0.002;      // gap between ball and bump top at the start, m
 };
 

@@ -16,7 +16,6 @@ ChairScenarioOptions ChairScenarioOptions::FromPreset(const std::string& preset)
     o.sliver_bound_degrees = 12;
     o.block.top_spacing = 0.003;
     o.block.wall_spacing = 0.02;
-    o.contact_stiffness = 8.6e3;
     return o;
   }
   throw InputError("chair scenario", "preset", "unknown preset \"" + preset + "\"",

@@ -42,9 +42,10 @@ struct ChairScenarioOptions {
   // expressed (two free axes generate the third), so the chair pitches only, as the shoe.
   std::string lock = "tx,tz,ry,rz";
   double upper_body_load = 0;  // extra downward force on the core, N (paper: 0, gravity only)
-  // Penalty stiffness k, N/m: calibrated per preset for 0.3 mm max penetration on the flat
-  // start (see FromPreset); ergo_optimize can recalibrate (--contact_stiffness=auto).
-  double contact_stiffness = 2.3e4;
+  // Contact stiffness κ, Pa/m (contact pressure per metre of penetration; mesh-independent):
+  // calibrated for 0.3 mm max penetration on the flat start of the quick preset;
+  // ergo_optimize can recalibrate (--contact_stiffness=auto).
+  double contact_stiffness = 8e7;
   double free_fall_mass_scale = 1e3;  // α of K + αM in free fall, 1/s² (paper: 1e3 chair)
   // One variable per designed vertex (its displacement along the initial normal): a third of
   // the variables of free positions, and no tangential motion that could tangle the top.

@@ -58,7 +58,6 @@ MouseScenarioOptions MouseScenarioOptions::FromPreset(const std::string& preset)
     o.body_edge_length = 0.0043;
     o.sliver_bound_degrees = 12;
     o.mouse.edge_length = 0.0016;
-    o.contact_stiffness = 450;
     return o;
   }
   throw InputError("mouse scenario", "preset", "unknown preset \"" + preset + "\"",

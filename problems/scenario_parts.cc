@@ -290,7 +290,7 @@ void FinishScenario(const std::string& description, const std::string& support_s
   std::ostringstream line;
   line << description << ": " << r.body_vertices << " body vertices, " << r.total_mass
        << " kg, load " << r.load.norm() << " N, " << r.support_vertices << " support vertices ("
-       << r.active_vertices << " designed), k " << contact_stiffness << " N/m";
+       << r.active_vertices << " designed), κ " << contact_stiffness << " Pa/m";
   scenario->description = line.str();
   DesignOptions& design = scenario->design;
   design.equilibrium.contact_stiffness = contact_stiffness;

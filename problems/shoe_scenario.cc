@@ -18,7 +18,6 @@ ShoeScenarioOptions ShoeScenarioOptions::FromPreset(const std::string& preset) {
     o.sliver_bound_degrees = 12;
     o.sole_top_spacing = 0.005;
     o.sole_wall_spacing = 0.005;
-    o.contact_stiffness = 1.32e4;
     return o;
   }
   throw InputError("shoe scenario", "preset", "unknown preset \"" + preset + "\"",

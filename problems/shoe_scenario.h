@@ -35,8 +35,9 @@ struct ShoeScenarioOptions {
   bool negative_image = false;
   NegativeImageOptions negative{0.01, 0, 3, 0.006, 10, 0.5, 0.001};
   std::string lock = "tx,tz,ry,rz";  // vertical translation and pitch (about x) only
-  // Penalty stiffness k, N/m, calibrated per preset for 0.3 mm max penetration (FromPreset).
-  double contact_stiffness = 3.2e4;
+  // Contact stiffness κ, Pa/m (mesh-independent), calibrated for 0.3 mm max penetration on
+  // the quick preset's flat sole.
+  double contact_stiffness = 8e8;
   double free_fall_mass_scale = 1e6;  // paper: 1e6 shoe
   DesignParameterization parameterization = DesignParameterization::kNormalDisplacement;
   UserBodyInput user_body;

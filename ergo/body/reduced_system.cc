@@ -294,6 +294,48 @@ void ReducedSystem::AddVertexHessian(const BodyState& state, const Vertices& pos
   evaluation->core_block += b.transpose() * block * b;
 }
 
+void ReducedSystem::AddVertexBlockHessian(const BodyState& state, const Vertices& positions,
+                                          const std::vector<int>& vertices,
+                                          const Eigen::MatrixXd& block,
+                                          Evaluation* evaluation) const {
+  CHECK(evaluation->with_hessian);
+  const auto n = static_cast<int>(vertices.size());
+  CHECK(block.rows() == 3 * n && block.cols() == 3 * n);
+  const Eigen::VectorXi& free_index = body_.free_index();
+  const std::vector<int>& components = layout_.core_components();
+  double* values = evaluation->hessian.valuePtr();
+  std::vector<Eigen::Matrix<double, 3, 6>> jacobian(static_cast<size_t>(n));
+  for (int a = 0; a < n; ++a)
+    if (free_index[vertices[a]] < 0)
+      jacobian[a] = FullCoreJacobian(positions.row(vertices[a]).transpose() - state.centre);
+  for (int a = 0; a < n; ++a) {
+    const int fa = free_index[vertices[a]];
+    for (int b = 0; b < n; ++b) {
+      const int fb = free_index[vertices[b]];
+      const Eigen::Matrix3d h = block.block<3, 3>(3 * a, 3 * b);
+      if (fa >= 0 && fb >= 0) {
+        // Upper triangle: each unordered free pair once (from its row-major side).
+        if (fa > fb) continue;
+        for (int c = 0; c < 3; ++c) {
+          const int base = IndexOf(evaluation->hessian, 3 * fa, 3 * fb + c);
+          const int rows = fa == fb ? c + 1 : 3;
+          for (int r = 0; r < rows; ++r) values[base + r] += h(r, c);
+        }
+      } else if (fa >= 0) {
+        // Free row, core column: K^FA B (its transpose is the lower triangle).
+        const Eigen::Matrix<double, 3, 6> coupling = h * jacobian[b];
+        const auto& index = free_core_index_[fa];
+        for (int j = 0; j < layout_.core_count(); ++j) {
+          CHECK_GE(index[j], 0) << "free vertex " << vertices[a] << " shares no tet with the core";
+          for (int r = 0; r < 3; ++r) values[index[j] + r] += coupling(r, components[j]);
+        }
+      } else if (fb < 0) {
+        evaluation->core_block += jacobian[a].transpose() * h * jacobian[b];
+      }
+    }
+  }
+}
+
 Eigen::VectorXd ReducedSystem::Finalize(const BodyState& state, const Vertices& positions,
                                         HessianKind kind, Evaluation* evaluation) const {
   Evaluation& e = *evaluation;

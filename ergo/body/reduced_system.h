@@ -69,6 +69,14 @@ class ReducedSystem {
   void AddVertexHessian(const BodyState& state, const Vertices& positions, int vertex,
                         const Eigen::Matrix3d& block, Evaluation* evaluation) const;
 
+  // Adds a symmetric Hessian block over up to four vertices (e.g. a contact spring whose
+  // anchor slides on a skin triangle): block (3n x 3n) in the order of `vertices`. Free
+  // pairs go into the pattern (they must share a tet, as a skin triangle's corners do),
+  // attached vertices through B.
+  void AddVertexBlockHessian(const BodyState& state, const Vertices& positions,
+                             const std::vector<int>& vertices, const Eigen::MatrixXd& block,
+                             Evaluation* evaluation) const;
+
   // Completes the evaluation from the total vertex gradient: returns the reduced gradient
   // and (with_hessian) adds the lever-arm term (projected PSD for kProjectedPsd) and
   // writes the core block into the sparse Hessian.

@@ -16,12 +16,22 @@ ContactSet EvaluateContacts(const Support& surface, const Vertices& points,
                             const Eigen::VectorXi& indices, double stiffness, bool with_hessian,
                             std::vector<SupportPoint>* hints) {
   CHECK_GT(stiffness, 0.0);
+  return EvaluateContacts(surface, points, indices, Eigen::VectorXd::Constant(points.rows(), stiffness),
+                          with_hessian, hints);
+}
+
+ContactSet EvaluateContacts(const Support& surface, const Vertices& points,
+                            const Eigen::VectorXi& indices, const Eigen::VectorXd& stiffness,
+                            bool with_hessian, std::vector<SupportPoint>* hints) {
+  CHECK_EQ(stiffness.size(), points.rows());
   CHECK(!hints || hints->size() == static_cast<size_t>(points.rows()));
   const auto count = static_cast<Eigen::Index>(indices.size());
   std::vector<std::optional<Contact>> found(static_cast<size_t>(count));
 #pragma omp parallel for schedule(dynamic, 256) if (count >= 1024)
   for (Eigen::Index i = 0; i < count; ++i) {
     const int point = indices[i];
+    const double k = stiffness[point];
+    if (!(k > 0)) continue;
     const Eigen::Vector3d p = points.row(point).transpose();
     const SupportPoint* hint = nullptr;
     if (hints && (*hints)[point].triangle >= 0) hint = &(*hints)[point];
@@ -30,8 +40,9 @@ ContactSet EvaluateContacts(const Support& surface, const Vertices& points,
     Contact contact;
     contact.point = point;
     contact.anchor = *anchor;
-    contact.spring = EvaluateSlidingAnchor(
-        anchor->feature.type, p, surface.Positions(anchor->feature), stiffness, with_hessian);
+    contact.stiffness = k;
+    contact.spring = EvaluateSlidingAnchor(anchor->feature.type, p,
+                                           surface.Positions(anchor->feature), k, with_hessian);
     found[i] = contact;
   }
   ContactSet set;

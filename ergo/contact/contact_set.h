@@ -20,6 +20,7 @@ namespace ergo {
 struct Contact {
   int point = -1;              // index into the evaluated point set
   SupportPoint anchor;         // closest surface point and its feature (surface vertex ids)
+  double stiffness = 0;        // k of this spring, N/m
   SlidingAnchorEnergy spring;  // E, ∂E/∂(p, x_feature), ∂²E (if requested)
   double penetration() const { return std::sqrt(anchor.squared_distance); }
   // Force on the point, −∂E/∂p, N.
@@ -35,10 +36,16 @@ struct ContactSet {
   Eigen::Vector3d TotalForce() const;
 };
 
-// Evaluates points(i) for every i in `indices` against `surface` with stiffness k (N/m),
-// in parallel, deterministically. `hints`, if given, holds one SupportPoint per point
-// index (size points.rows()): it seeds each query with the previous anchor and is updated
-// for points found in contact.
+// Evaluates points(i) for every i in `indices` against `surface`, point i's spring with
+// stiffness stiffness[i] (N/m; one entry per point, i.e. size points.rows(); points with
+// k = 0 are skipped), in parallel, deterministically. `hints`, if given, holds one
+// SupportPoint per point index (size points.rows()): it seeds each query with the previous
+// anchor and is updated for points found in contact.
+ContactSet EvaluateContacts(const Support& surface, const Vertices& points,
+                            const Eigen::VectorXi& indices, const Eigen::VectorXd& stiffness,
+                            bool with_hessian, std::vector<SupportPoint>* hints = nullptr);
+
+// The same with one stiffness k (N/m) for every point.
 ContactSet EvaluateContacts(const Support& surface, const Vertices& points,
                             const Eigen::VectorXi& indices, double stiffness, bool with_hessian,
                             std::vector<SupportPoint>* hints = nullptr);

@@ -11,7 +11,7 @@ namespace ergo {
 
 std::string CalibrationResult::BriefReport() const {
   std::ostringstream out;
-  out << (converged ? "converged" : "not converged") << ": k = " << stiffness << " N/m gives "
+  out << (converged ? "converged" : "not converged") << ": κ = " << stiffness << " Pa/m gives "
       << penetration * 1e3 << " mm (target " << target * 1e3 << " mm) after " << evaluations
       << " solves";
   if (!converged) out << " — " << message;
@@ -55,7 +55,7 @@ CalibrationResult CalibrateStiffness(
     if (!penetration || !std::isfinite(*penetration) || *penetration < 0) {
       if (!have_success) {
         std::ostringstream out;
-        out << "the equilibrium failed at k = " << k << " N/m before any stiffness worked";
+        out << "the equilibrium failed at κ = " << k << " Pa/m before any stiffness worked";
         result.message = out.str();
         return result;
       }
@@ -115,7 +115,7 @@ CalibrationResult CalibrateStiffness(
     next = std::clamp(next, log_min, log_max);
     if (next == x) {
       std::ostringstream out;
-      out << "stuck at the stiffness limit k = " << std::exp(x) << " N/m";
+      out << "stuck at the stiffness limit κ = " << std::exp(x) << " Pa/m";
       result.message = out.str();
       return result;
     }

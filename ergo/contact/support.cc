@@ -162,6 +162,7 @@ struct Support::Impl {
   std::vector<Eigen::Vector3d> face_normal;    // unit (zero for a degenerate triangle)
   std::vector<Eigen::Vector3d> edge_normal;    // 3f + c: sum of the two unit face normals
   std::vector<Eigen::Vector3d> vertex_normal;  // angle-weighted sum (Bærentzen & Aanæs 2005)
+  Eigen::VectorXd vertex_area;  // barycentric, m²
   std::uint64_t shape = 0;
   // Triangle id -> its primitive in the tree: the hint is read from the copy the descent
   // will touch anyway (one cache line instead of an index row plus three vertex rows).
@@ -201,11 +202,13 @@ struct Support::Impl {
     CollectPrimitives(*tree.root_node(), tree.size());
 
     face_normal.assign(nf, Eigen::Vector3d::Zero());
+    vertex_area = Eigen::VectorXd::Zero(mesh.vertices.rows());
     for (int f = 0; f < nf; ++f) {
       const auto& x = records[f].x;
       const Eigen::Vector3d n = (x[1] - x[0]).cross(x[2] - x[0]);
       const double length = n.norm();
       if (length > 0) face_normal[f] = n / length;
+      for (int c = 0; c < 3; ++c) vertex_area[mesh.triangles(f, c)] += length / 6;
     }
     edge_normal.resize(3 * nf);
     for (int f = 0; f < nf; ++f)
@@ -292,11 +295,21 @@ Support::Support(TriMesh mesh, const std::string& source) : impl_(std::make_uniq
   impl_->Build();
 }
 
+Support::Support(const Support& other) : impl_(std::make_unique<Impl>()) {
+  impl_->mesh = other.impl_->mesh;
+  impl_->tree.do_not_accelerate_distance_queries();
+  impl_->neighbour = other.impl_->neighbour;
+  impl_->Build();
+}
+
 Support::~Support() = default;
 Support::Support(Support&&) noexcept = default;
 Support& Support::operator=(Support&&) noexcept = default;
 
 const TriMesh& Support::mesh() const { return impl_->mesh; }
+const Eigen::VectorXd& Support::vertex_areas() const { return impl_->vertex_area; }
+std::uint64_t Support::shape() const { return impl_->shape; }
+bool Support::InBoundingBox(const Eigen::Vector3d& p) const { return impl_->StrictlyInsideBox(p); }
 
 void Support::UpdateVertices(const Vertices& positions) {
   CHECK_EQ(positions.rows(), impl_->mesh.vertices.rows()) << "vertex count changed";

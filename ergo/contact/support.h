@@ -39,10 +39,22 @@ class Support {
   // triangles) and builds the tree; throws InputError naming `source` otherwise.
   explicit Support(TriMesh mesh, const std::string& source = "support mesh");
   ~Support();
+  // A copy of an already validated support: the same shape with its own tree (no
+  // re-validation). Copies may be queried and updated independently.
+  Support(const Support& other);
+  Support& operator=(const Support&) = delete;
   Support(Support&&) noexcept;
   Support& operator=(Support&&) noexcept;
 
   const TriMesh& mesh() const;
+  // Barycentric area of every vertex (a third of each incident triangle's), m², at the
+  // current shape.
+  const Eigen::VectorXd& vertex_areas() const;
+  // Identifies the current shape: changes with every UpdateVertices (as SupportPoint::shape).
+  std::uint64_t shape() const;
+  // True iff p lies strictly inside the axis-aligned bounding box of S: a point outside it
+  // is outside S, with no search.
+  bool InBoundingBox(const Eigen::Vector3d& p) const;
 
   // Moves the vertices (same count and connectivity) and rebuilds the tree and normals.
   // The new shape is not re-validated (cost); triangles that become degenerate get a zero

@@ -1,40 +1,36 @@
-// The bi-directional contact pressures at an equilibrium (paper §4.1, Eq. 11–12, Fig. 4):
-// on the human side each skin vertex's own penalty spring (the very forces the equilibrium
-// used), on the support side the springs of support vertices inside the deformed skin,
-// each turned into smoothed pressures and a cost by ergo/ergonomics. Shared by the design
-// objective, ergo_simulate and ergo_optimize so every output reports the same forces.
+// The contact pressures at an equilibrium (paper §4.1, Eq. 11–12, Fig. 4), from the very
+// springs the equilibrium used (ergo/contact/surface_contact.h, both directions): at every
+// skin vertex inside the support and every support vertex inside the skin the model's
+// pressure p = κg (its load p·s over its barycentric area: the skin's at rest, the
+// support's at its current shape), smoothed and scored by ergo/ergonomics. Shared by the design objective, ergo_simulate and ergo_optimize, so every
+// output reports the forces the solver applied.
 #pragma once
 
 #include <Eigen/Core>
 
 #include "ergo/body/layered_body.h"
-#include "ergo/contact/contact_set.h"
-#include "ergo/contact/support.h"
+#include "ergo/contact/surface_contact.h"
 #include "ergo/ergonomics/pressure_cost.h"
 #include "ergo/mesh/laplacian.h"
 
 namespace ergo {
 
 struct ContactPressures {
-  ContactSet human_contacts;      // skin vertices inside the support (point = tet-mesh vertex)
-  ContactSet support_contacts;    // support vertices inside the skin (feature ids = skin-local)
+  SurfaceContacts contacts;       // the equilibrium's springs and per-vertex forces
   SurfacePressure human;          // per skin vertex, in LayeredBody::skin() order
   SurfacePressure support;        // per support vertex
-  Eigen::VectorXd support_areas;  // barycentric, at the given support positions, m²
+  Eigen::VectorXd support_areas;  // barycentric, at the support's shape, m²
 };
 
 class ContactPressureEvaluator {
  public:
-  // Keeps a reference to `body`; builds the skin's search tree once (rest shape).
+  // Keeps a reference to `body`.
   ContactPressureEvaluator(const LayeredBody& body, const Triangles& support_triangles,
                            Eigen::Index support_vertex_count, const PressureCostOptions& options);
-  ContactPressureEvaluator(const ContactPressureEvaluator& other);
 
-  // Pressures for body vertex positions `positions` whose skin springs against the support
-  // are `human_contacts`, support vertices at `support_positions`, stiffness k.
-  // with_hessian keeps the reverse springs' Hessians (for the adjoint).
-  ContactPressures Evaluate(const Vertices& positions, ContactSet human_contacts,
-                            const Vertices& support_positions, double stiffness, bool with_hessian);
+  // Pressures and costs of both surfaces for the equilibrium's `contacts`, support vertex
+  // areas `support_areas` (m²).
+  ContactPressures Evaluate(SurfaceContacts contacts, const Eigen::VectorXd& support_areas) const;
 
   const SparseMatrix& skin_laplacian() const { return skin_laplacian_; }
   const SparseMatrix& support_laplacian() const { return support_laplacian_; }
@@ -42,10 +38,8 @@ class ContactPressureEvaluator {
 
  private:
   const LayeredBody& body_;
-  Triangles support_triangles_;
   PressureCostOptions options_;
   SparseMatrix skin_laplacian_, support_laplacian_;
-  Support skin_;  // the body's skin, moved to the deformed positions per evaluation
 };
 
 }  // namespace ergo

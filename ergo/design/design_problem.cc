@@ -7,6 +7,7 @@
 #include <glog/logging.h>
 
 #include "ergo/mesh/preconditioned_cg.h"
+#include "ergo/design/score_gradient.h"
 #include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
@@ -18,12 +19,16 @@ double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// −(f/‖f‖)ᵀ ∂f/∂(spring variables)... with f = −∂E/∂p: ∂‖f‖/∂z = −(f/‖f‖)ᵀ H[0:3, :].
-Eigen::Matrix<double, 1, 12> ForceMagnitudeGradient(const Contact& contact) {
-  const Eigen::Vector3d f = contact.force();
-  const double magnitude = f.norm();
-  if (magnitude == 0) return Eigen::Matrix<double, 1, 12>::Zero();
-  return -(f / magnitude).transpose() * contact.spring.hessian.topRows<3>();
+// The options with the contact's skin share fixed from the initial support (so that every
+// design, and a fresh problem on the final design, uses the same contact model).
+DesignOptions WithContactShare(const DesignOptions& options, const LayeredBody& body,
+                               const TriMesh& support) {
+  DesignOptions out = options;
+  if (out.equilibrium.contact_skin_share == 0) {
+    out.equilibrium.contact_skin_share = ContactSkinShare(
+        body.skin().rest_areas, BarycentricVertexAreas(support), options.active);
+  }
+  return out;
 }
 
 }  // namespace
@@ -31,13 +36,13 @@ Eigen::Matrix<double, 1, 12> ForceMagnitudeGradient(const Contact& contact) {
 DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
                              const BodyState& start, const DesignOptions& options)
     : body_(body),
-      options_(options),
+      options_(WithContactShare(options, body, support)),
       initial_support_(support),
       parameterization_(support, options.active, options.parameterization),
       support_laplacian_(UmbrellaLaplacian(support.triangles, support.vertices.rows())),
       support_(support, "support"),
       pressures_(body, support.triangles, support.vertices.rows(), options.pressure),
-      solver_(body, options.equilibrium),
+      solver_(body, options_.equilibrium),
       last_state_(start),
       counters_(std::make_shared<DesignCounters>()) {
   adjoint_cholesky_.Analyze(solver_.potential().system().pattern());
@@ -49,15 +54,13 @@ DesignProblem::DesignProblem(const DesignProblem& other)
       initial_support_(other.initial_support_),
       parameterization_(other.parameterization_),
       support_laplacian_(other.support_laplacian_),
-      support_(other.initial_support_, "support"),
+      support_(other.support_),
       pressures_(other.pressures_),
       solver_(other.solver_),
       adjoint_cholesky_(other.adjoint_cholesky_),
       last_state_(other.last_state_),
       cache_(other.cache_),
-      counters_(other.counters_) {
-  support_.UpdateVertices(other.support_.mesh().vertices);
-}
+      counters_(other.counters_) {}
 
 void DesignProblem::set_contact_stiffness(double k) {
   options_.equilibrium.contact_stiffness = k;
@@ -123,23 +126,13 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     potential.Evaluate(state, support_, HessianKind::kExact, true, &solver_.hints(), &computed);
   const TotalPotential::Evaluation& e = reuse ? solver_.last_evaluation() : computed;
 
-  // Bi-directional pressures (Eq. 11–12, Fig. 4): the skin's own springs (the forces the
-  // equilibrium used) and the support vertices inside the deformed skin.
-  const Skin& skin = body_.skin();
-  const ContactPressures pressures = pressures_.Evaluate(
-      e.positions, e.contacts, support_positions, potential.contact_stiffness(), with_gradient);
-  out.human = pressures.human;
-  out.support = pressures.support;
-  out.support_areas = pressures.support_areas;
-  const ContactSet& human_contacts = pressures.human_contacts;
-  const ContactSet& reverse = pressures.support_contacts;
+  // Pressures of both surfaces from the springs the equilibrium used (Eq. 11–12, Fig. 4).
+  out.pressures = pressures_.Evaluate(e.contacts, support_.vertex_areas());
   const TriMesh support_mesh{support_positions, initial_support_.triangles};
-  const auto support_count = static_cast<int>(support_positions.rows());
-
   const SmoothnessValue psi =
       EvaluateSmoothness(support_positions, support_laplacian_, options_.taubin);
-  out.zeta_human = out.human.cost;
-  out.zeta_support = out.support.cost;
+  out.zeta_human = out.pressures.human.cost;
+  out.zeta_support = out.pressures.support.cost;
   out.zeta = out.zeta_human + out.zeta_support;
   out.psi = psi.value;
   out.phi = out.zeta + options_.gamma * out.psi;
@@ -147,39 +140,9 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
 
   if (with_gradient) {
     const Clock::time_point adjoint_begin = Clock::now();
-    Vertices d_body = Vertices::Zero(e.positions.rows(), 3);  // ∂ζ/∂(tet-mesh positions)
-    Vertices d_support = Vertices::Zero(support_count, 3);    // ∂ζ/∂X, explicit part
-    for (const Contact& contact : human_contacts.contacts) {
-      const double weight = out.human.d_force_magnitude[skin.local_of[contact.point]];
-      if (weight == 0) continue;
-      const Eigen::Matrix<double, 1, 12> row = weight * ForceMagnitudeGradient(contact);
-      d_body.row(contact.point) += row.segment<3>(0);
-      for (int k = 0; k < contact.anchor.feature.size(); ++k)
-        d_support.row(contact.anchor.feature.vertices[k]) += row.segment<3>(3 + 3 * k);
-    }
-    for (const Contact& contact : reverse.contacts) {
-      const double weight = out.support.d_force_magnitude[contact.point];
-      if (weight == 0) continue;
-      const Eigen::Matrix<double, 1, 12> row = weight * ForceMagnitudeGradient(contact);
-      d_support.row(contact.point) += row.segment<3>(0);
-      for (int k = 0; k < contact.anchor.feature.size(); ++k)
-        d_body.row(skin.vertices[contact.anchor.feature.vertices[k]]) += row.segment<3>(3 + 3 * k);
-    }
-    // Support areas s_j(x): one third of each incident triangle.
-    for (Eigen::Index t = 0; t < support_mesh.triangles.rows(); ++t) {
-      const Eigen::RowVector3i tri = support_mesh.triangles.row(t);
-      const double weight =
-          (out.support.d_area[tri[0]] + out.support.d_area[tri[1]] + out.support.d_area[tri[2]]) /
-          3;
-      if (weight == 0) continue;
-      const Eigen::Matrix3d area_gradient =
-          TriangleAreaGradient(support_positions.row(tri[0]), support_positions.row(tri[1]),
-                               support_positions.row(tri[2]));
-      for (int k = 0; k < 3; ++k) d_support.row(tri[k]) += weight * area_gradient.row(k);
-    }
-
-    // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂X through the springs' cross blocks.
-    const Eigen::VectorXd rhs = potential.system().ReduceVertexGradient(state, e.positions, d_body);
+    ScorePartials partials = PressureScorePartials(out.pressures, body_);
+    // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
+    const Eigen::VectorXd rhs = potential.system().ReduceVertexGradient(state, e.positions, partials.body);
     if (rhs.squaredNorm() > 0) {
       // The adjoint system with the exact K̂ at y*: conjugate gradients preconditioned by the
       // Newton factor (of K̂ at the last iterate, next to y*), else a fresh factorisation.
@@ -201,14 +164,13 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       }
       const Vertices velocity =
           potential.system().layout().VertexVelocity(body_, state, e.positions, z);
-      for (const Contact& contact : human_contacts.contacts) {
-        const Eigen::RowVector3d v = velocity.row(contact.point);
-        for (int k = 0; k < contact.anchor.feature.size(); ++k) {
-          d_support.row(contact.anchor.feature.vertices[k]) -=
-              v * contact.spring.hessian.block<3, 3>(0, 3 + 3 * k);
-        }
-      }
+      const SupportShapeGradient contraction = ResidualShapeContraction(
+          out.pressures.contacts, body_, out.pressures.support_areas, velocity);
+      partials.support.position -= contraction.position;
+      partials.support.area -= contraction.area;
     }
+    const Vertices d_support =
+        partials.support.position + ChainSupportAreas(partials.support.area, support_mesh);
     out.zeta_gradient = parameterization_.PullBack(d_support);
     out.psi_gradient = parameterization_.PullBack(psi.gradient);
     out.gradient = out.zeta_gradient + options_.gamma * out.psi_gradient;

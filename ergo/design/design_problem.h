@@ -38,6 +38,7 @@ struct DesignOptions {
   TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
   double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
   DesignParameterization parameterization = DesignParameterization::kPositions;
+  double filter_radius = 0;  // m, for DesignParameterization::kFiltered
   std::vector<bool> active;   // movable support vertices; empty = all
   int warm_start_cache = 16;  // equilibria kept for warm starts
 };
@@ -46,16 +47,16 @@ struct DesignEvaluation {
   bool ok = false;
   std::string message;  // why not ok (the equilibrium's report), or "ok"
   double phi = 0, zeta = 0, psi = 0;
-  double zeta_human = 0, zeta_support = 0;
-  Eigen::VectorXd gradient;       // dφ/dx (when requested)
-  Eigen::VectorXd zeta_gradient;  // dζ/dx
-  Eigen::VectorXd psi_gradient;   // dψ/dx
+  double zeta_human = 0, zeta_support = 0;  // ζ's skin and support halves
+  Eigen::VectorXd gradient;                 // dφ/dx (when requested)
+  Eigen::VectorXd zeta_gradient;            // dζ/dx
+  Eigen::VectorXd psi_gradient;             // dψ/dx
   EquilibriumResult equilibrium;
-  SurfacePressure human;          // per skin vertex (LayeredBody::skin() order)
-  SurfacePressure support;        // per support vertex
-  Eigen::VectorXd support_areas;  // barycentric support areas at x, m²
-  double seconds = 0;             // this evaluation, wall
-  double adjoint_seconds = 0;     // the gradient part
+  // The equilibrium's springs, per-vertex forces and both surfaces' pressures: what the
+  // reports and pictures show (nothing is rebuilt for output).
+  ContactPressures pressures;
+  double seconds = 0;          // this evaluation, wall
+  double adjoint_seconds = 0;  // the gradient part
 };
 
 // Evaluation counts shared by a problem and all its copies.

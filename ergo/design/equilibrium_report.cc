@@ -39,8 +39,8 @@ void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, cons
   for (Eigen::Index v = 0; v < n; ++v) attached[v] = body.attached()[v] ? 1.0 : 0.0;
   Eigen::Matrix<double, Eigen::Dynamic, 3> force =
       Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
-  for (const Contact& contact : pressures.human_contacts.contacts)
-    force.row(contact.point) = contact.force().transpose();
+  for (Eigen::Index i = 0; i < skin.vertices.size(); ++i)
+    force.row(skin.vertices[i]) = pressures.contacts.skin_force.row(i);
   VtuFields fields;
   fields.point_scalars = {
       {"pressure_Pa", pressure}, {"smoothed_pressure_Pa", smoothed}, {"attached", attached}};
@@ -53,10 +53,7 @@ void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, cons
 void WriteSupportVtu(const std::string& path, const TriMesh& support,
                      const ContactPressures& pressures, const Vertices& initial) {
   const Eigen::Index n = support.vertices.rows();
-  Eigen::Matrix<double, Eigen::Dynamic, 3> force =
-      Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(n, 3);
-  for (const Contact& contact : pressures.support_contacts.contacts)
-    force.row(contact.point) = contact.force().transpose();
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> force = pressures.contacts.support_force;
   VtuFields fields;
   fields.point_scalars = {{"pressure_Pa", pressures.support.pressure},
                           {"smoothed_pressure_Pa", pressures.support.smoothed},
@@ -82,6 +79,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   json["residual_N"] = result.residual;
   json["relative_residual"] = result.relative_residual;
   json["contact_vertices"] = result.contact_vertices;
+  json["contact_springs"] = result.contact_springs;
   json["max_penetration_m"] = result.max_penetration;
   json["total_contact_force_N"] = Vector3Json(result.contact_force);
   json["load_N"] = Vector3Json(body.TotalLoad());
@@ -89,7 +87,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   json["p95_pressure_Pa"] = human.percentile95;
   json["mean_pressure_Pa"] = human.mean;
   json["contact_area_m2"] = human.contact_area;
-  json["contact_stiffness"] = contact_stiffness;
+  json["contact_stiffness_Pa_per_m"] = contact_stiffness;
   json["energy_J"] = result.energy;
   json["zeta_human"] = pressures.human.cost;
   json["zeta_support"] = pressures.support.cost;

@@ -99,9 +99,10 @@ EquilibriumResult SolveEquilibriumWithCeres(const TotalPotential& potential, con
   result.residual = potential.ResidualNorm(e.gradient);
   result.relative_residual = result.residual / (load > 0 ? load : 1.0);
   result.energy = e.energy;
-  result.contact_vertices = e.contacts.size();
+  result.contact_vertices = e.contacts.skin_vertices_in_contact();
+  result.contact_springs = e.contacts.springs();
   result.max_penetration = e.contacts.max_penetration;
-  result.contact_force = e.contacts.TotalForce();
+  result.contact_force = e.contacts.TotalForceOnBody();
   result.converged = result.relative_residual <= relative_tolerance;
   result.status =
       result.converged ? EquilibriumStatus::kConverged : EquilibriumStatus::kIterationCap;

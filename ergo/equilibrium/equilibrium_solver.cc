@@ -69,7 +69,9 @@ std::string EquilibriumResult::FullReport() const {
 }
 
 EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options)
-    : body_(body), options_(options), potential_(body, options.contact_stiffness) {
+    : body_(body),
+      options_(options),
+      potential_(body, SurfaceContactOptions{options.contact_stiffness, options.contact_skin_share}) {
   CHECK_GT(options.relative_tolerance, 0.0);
   CHECK_GE(options.max_iterations, 1);
   CHECK_GT(options.free_fall_mass_scale, 0.0);
@@ -108,12 +110,8 @@ std::string EquilibriumSolver::UnconstrainedTranslations(
   // A rigid translation e moves every vertex by e; elasticity does not resist it, so its
   // stiffness is Σ eᵀ H_c e over the contact springs' point blocks.
   const ReducedLayout& layout = potential_.system().layout();
-  double total = 0;
-  Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
-  for (const Contact& contact : evaluation.contacts.contacts) {
-    stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
-  }
-  total = stiffness.trace();
+  const Eigen::Matrix3d stiffness = evaluation.contacts.TranslationStiffness();
+  const double total = stiffness.trace();
   std::string free;
   constexpr const char* kNames[3] = {"tx", "ty", "tz"};
   for (int component : layout.core_components()) {
@@ -175,9 +173,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     result.residual = potential_.ResidualNorm(e.gradient);
     result.relative_residual = result.residual / (load > 0 ? load : 1.0);
     result.energy = e.energy;
-    result.contact_vertices = e.contacts.size();
+    result.contact_vertices = e.contacts.skin_vertices_in_contact();
+    result.contact_springs = e.contacts.springs();
     result.max_penetration = e.contacts.max_penetration;
-    result.contact_force = e.contacts.TotalForce();
+    result.contact_force = e.contacts.TotalForceOnBody();
     if (!std::isfinite(result.residual) || !std::isfinite(e.energy)) {
       return finish(EquilibriumStatus::kNonFinite,
                     "the energy or residual is not finite (an element inverted beyond repair, or "
@@ -185,7 +184,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     }
     // A free core DOF without stiffness makes the equilibrium non-unique (and K̂ singular
     // for the adjoint) even when its residual happens to vanish: check before accepting.
-    if (e.contacts.size() > 0) {
+    if (e.contacts.springs() > 0) {
       const std::string unconstrained = UnconstrainedTranslations(e);
       if (!unconstrained.empty()) return finish(EquilibriumStatus::kUnconstrained, unconstrained);
     }
@@ -194,7 +193,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       return finish(EquilibriumStatus::kIterationCap,
                     "no convergence in " + std::to_string(iteration) + " Newton iterations");
     }
-    const bool in_contact = e.contacts.size() > 0;
+    const bool in_contact = e.contacts.springs() > 0;
     if (!in_contact && FellPastSupport(e.positions, support)) {
       return finish(EquilibriumStatus::kNoContact,
                     "no contact: the body fell past the support without touching it; place it "

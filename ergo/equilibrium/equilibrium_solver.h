@@ -28,7 +28,12 @@
 namespace ergo {
 
 struct EquilibriumOptions {
-  double contact_stiffness = 1e4;  // k of Eq. 10, N/m
+  // κ of the area-weighted contact (ergo/contact/surface_contact.h): contact pressure per
+  // metre of penetration, Pa/m. Mesh-independent: a spring's k is κ times its vertex area.
+  double contact_stiffness = 1e8;
+  // α, the skin's share of the contact quadrature (SurfaceContactOptions::skin_share); 0:
+  // chosen from the meshes at the first solve (ContactSkinShare).
+  double contact_skin_share = 0;
   // Converged when ResidualNorm ≤ relative_tolerance · |weight + external force|.
   double relative_tolerance = 1e-8;
   int max_iterations = 100;
@@ -74,8 +79,9 @@ struct EquilibriumResult {
   double residual = 0;      // final ResidualNorm, N
   double relative_residual = 0;
   double energy = 0;  // J
-  int contact_vertices = 0;
-  double max_penetration = 0;                               // m
+  int contact_vertices = 0;    // skin vertices inside the support
+  int contact_springs = 0;     // springs of both kinds
+  double max_penetration = 0;  // m
   Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();  // Σ contact forces on the body, N
   // Seconds spent, by part.
   double assembly_seconds = 0, contact_seconds = 0, factorization_seconds = 0,

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include <glog/logging.h>
+#include <Eigen/Eigenvalues>
 
 namespace ergo {
 namespace {
@@ -11,28 +12,35 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+SurfaceContact MakeSurfaceContact(const LayeredBody& body, const SurfaceContactOptions& options) {
+  const Skin& skin = body.skin();
+  return SurfaceContact(skin.RestSurface(body.rest().vertices), skin.vertices, skin.rest_areas,
+                        options);
+}
+
 }  // namespace
 
-TotalPotential::TotalPotential(const LayeredBody& body, double contact_stiffness)
-    : system_(body), stiffness_(contact_stiffness) {
-  CHECK_GT(contact_stiffness, 0.0);
+Eigen::MatrixXd SkinFeatureHessian(const Contact& support_spring, bool project_psd) {
+  const int n = support_spring.anchor.feature.size();
+  Eigen::MatrixXd block = support_spring.spring.hessian.block(3, 3, 3 * n, 3 * n);
+  if (!project_psd) return block;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(block);
+  return eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() *
+         eigen.eigenvectors().transpose();
+}
+
+TotalPotential::TotalPotential(const LayeredBody& body, const SurfaceContactOptions& options)
+    : system_(body), contact_(MakeSurfaceContact(body, options)) {
   double lever = 0;
   for (Eigen::Index a : body.attached_vertices())
     lever = std::max(lever, (body.rest().vertices.row(a).transpose() - body.core_centre()).norm());
   lever_length_ = lever > 0 ? lever : 1.0;
 }
 
-void TotalPotential::set_contact_stiffness(double k) {
-  CHECK_GT(k, 0.0);
-  stiffness_ = k;
-}
-
 double TotalPotential::Energy(const BodyState& state, const Support& support,
                               std::vector<SupportPoint>* hints) const {
   const Vertices positions = DeformedPositions(body(), state);
-  const ContactSet contacts =
-      EvaluateContacts(support, positions, body().skin().vertices, stiffness_, false, hints);
-  return system_.Energy(state, positions) + contacts.energy;
+  return system_.Energy(state, positions) + contact_.Energy(positions, support, hints);
 }
 
 void TotalPotential::Evaluate(const BodyState& state, const Support& support, HessianKind kind,
@@ -41,17 +49,32 @@ void TotalPotential::Evaluate(const BodyState& state, const Support& support, He
   Evaluation& e = *evaluation;
   e.positions = DeformedPositions(body(), state);
   auto start = std::chrono::steady_clock::now();
-  e.contacts = EvaluateContacts(support, e.positions, body().skin().vertices, stiffness_,
-                                with_hessian, hints);
+  contact_.Evaluate(e.positions, support, with_hessian, hints, &e.contacts);
   e.contact_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   system_.Evaluate(state, e.positions, kind, with_hessian, &e.body);
-  for (const Contact& contact : e.contacts.contacts) {
+  for (const Contact& contact : e.contacts.skin.contacts) {
     e.body.vertex_gradient.row(contact.point) += contact.spring.gradient.head<3>().transpose();
     if (with_hessian) {
-      // Only the skin-vertex block: the support is fixed during the equilibrium.
+      // The skin vertex's block only: the support is fixed during the equilibrium. It is
+      // positive semi-definite in every Voronoi region (2k I, 2k(I − êêᵀ), 2k nnᵀ).
       system_.AddVertexHessian(state, e.positions, contact.point,
                                contact.spring.hessian.topLeftCorner<3, 3>(), &e.body);
+    }
+  }
+  const Eigen::VectorXi& skin_vertices = body().skin().vertices;
+  for (const Contact& contact : e.contacts.support.contacts) {
+    const Feature& feature = contact.anchor.feature;
+    std::vector<int> vertices(static_cast<size_t>(feature.size()));
+    for (int k = 0; k < feature.size(); ++k) {
+      vertices[k] = skin_vertices[feature.vertices[k]];
+      e.body.vertex_gradient.row(vertices[k]) +=
+          contact.spring.gradient.segment<3>(3 + 3 * k).transpose();
+    }
+    if (with_hessian) {
+      system_.AddVertexBlockHessian(
+          state, e.positions, vertices,
+          SkinFeatureHessian(contact, kind == HessianKind::kProjectedPsd), &e.body);
     }
   }
   e.body.energy += e.contacts.energy;

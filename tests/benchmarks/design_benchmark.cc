@@ -28,7 +28,7 @@ Fixture& FixtureFor(int thousands) {
   if (f.problem) return f;
   BumpScenarioOptions options;
   options.edge_length = EdgeLengthFor(thousands);
-  options.contact_stiffness = 600;
+  options.contact_stiffness = 1e7;  // κ, Pa/m
   f.scenario = MakeBumpScenario(options);
   f.problem = std::make_unique<DesignProblem>(f.scenario.MakeProblem());
   f.x0 = f.problem->InitialDesign();

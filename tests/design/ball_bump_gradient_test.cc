@@ -20,7 +20,7 @@ class DesignGradientBallOnBump : public ::testing::TestWithParam<DesignParameter
 TEST_P(DesignGradientBallOnBump, AdjointGradientMatchesFiniteDifferences) {
   BumpScenarioOptions options;
   options.edge_length = 0.012;
-  options.contact_stiffness = 600;
+  options.contact_stiffness = 1e7;  // κ, Pa/m
   Scenario scenario = MakeBumpScenario(options);
   scenario.design.parameterization = GetParam();
   scenario.design.equilibrium.relative_tolerance = 1e-11;

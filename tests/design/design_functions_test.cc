@@ -35,7 +35,7 @@ BumpScene MakeBumpScene() {
 
 DesignOptions Options() {
   DesignOptions options;
-  options.equilibrium.contact_stiffness = 3e3;
+  options.equilibrium.contact_stiffness = 5e6;  // κ, Pa/m
   options.parameterization = DesignParameterization::kNormalDisplacement;
   return options;
 }

@@ -79,7 +79,7 @@ HertzMeasurement Simulate(double fine_edge, double force) {
   const Support plane(MakeBox({-0.1, -0.05, -0.1}, {0.1, 0, 0.1}, {1, 1, 1}), "rigid plane");
   const BodyState start = PlaceAboveSupport(body, RestState(body), plane, 1e-4).state;
   EquilibriumOptions eq;
-  eq.contact_stiffness = 100;
+  eq.contact_stiffness = 1e7;  // κ, Pa/m: a first guess for the calibration
   EquilibriumSolver solver(body, eq);
   // Penalty penetration ~1 % of the Hertz indentation a²/R (2 mm here).
   const double a_theory = std::cbrt(3 * force * kRadius / (4 * kYoung / (1 - kPoisson * kPoisson)));
@@ -98,8 +98,8 @@ HertzMeasurement Simulate(double fine_edge, double force) {
   HertzMeasurement m;
   const Skin& skin = body.skin();
   std::vector<double> pressure(static_cast<size_t>(skin.vertices.size()), 0.0);
-  for (const Contact& c : e.contacts.contacts)
-    pressure[skin.local_of[c.point]] = c.force().norm() / skin.rest_areas[skin.local_of[c.point]];
+  for (Eigen::Index l = 0; l < skin.vertices.size(); ++l)
+    pressure[l] = e.contacts.skin_force.row(l).norm() / skin.rest_areas[l];
   for (Eigen::Index i = 0; i < skin.vertices.size(); ++i) {
     const Eigen::Vector3d p = e.positions.row(skin.vertices[i]);
     const double r = std::hypot(p.x() - result.state.centre.x(), p.z() - result.state.centre.z());

@@ -9,7 +9,7 @@ namespace {
 TEST(Problems, BumpCostGrowsMonotonicallyWithFrequencyForEveryExponent) {
   BumpScenarioOptions options;
   options.edge_length = 0.012;
-  options.contact_stiffness = 600;
+  options.contact_stiffness = 1e7;  // κ, Pa/m
   const std::vector<BumpSweepPoint> points =
       RunBumpFrequencySweep(options, {0.03, 0.015, 0.01, 0.006});
   ASSERT_EQ(points.size(), 4u);

@@ -104,7 +104,7 @@ inline EquilibriumResult ExpectBalancedEquilibrium(const Scenario& scenario, dou
   EXPECT_GE(free_translations, 1);
   EXPECT_GE(result.max_penetration, min_penetration);
   EXPECT_LE(result.max_penetration, max_penetration);
-  EXPECT_GT(result.contact_vertices, 10);
+  EXPECT_GT(result.contact_springs, 10);
   return result;
 }
 

@@ -94,7 +94,7 @@ TEST(Problems, ScenarioTakesAUserBodyDirectoryAndSupportFile) {
   MouseScenarioOptions mouse = MouseScenarioOptions::FromPreset("quick");
   mouse.user_body.body_directory = dir + "/ball";
   mouse.user_support.path = dir + "/plate.stl";
-  mouse.contact_stiffness = 2e3;
+  mouse.contact_stiffness = 1e8;  // κ, Pa/m
   ScenarioBuildReport report;
   const Scenario scenario = MakeMouseScenario(mouse, &report);
   std::cout << report.body << "\n" << report.support << "\n";
@@ -130,7 +130,7 @@ TEST(Problems, ScenarioTakesAUserTetMeshWithItsCavityAsTheCore) {
   mouse.user_body.youngs_modulus = 2e4;
   mouse.user_body.total_mass = 0.5;
   mouse.user_support.path = dir + "/plate.stl";
-  mouse.contact_stiffness = 2e3;
+  mouse.contact_stiffness = 1e8;  // κ, Pa/m
   ScenarioBuildReport report;
   const Scenario scenario = MakeMouseScenario(mouse, &report);
   std::cout << report.body << "\n";

@@ -70,13 +70,16 @@ TEST_F(ToolsSimulate, CalibratedRunBalancesTheLoadAndWritesEveryOutput) {
   EXPECT_TRUE(GetBool(summary, "converged", "summary"));
   const Json& force = GetMember(summary, "total_contact_force_N", "summary");
   const Json& load = GetMember(summary, "load_N", "summary");
-  for (size_t k = 0; k < 3; ++k)
-    EXPECT_NEAR(force[k].AsNumber(), -load[k].AsNumber(), 1e-6 * std::abs(load[1].AsNumber()));
+  // y is the one free translation (the lock holds tx, tz and the rotations, which carry any
+  // sideways push of the ball's faceted skin on the slab's vertices).
+  EXPECT_NEAR(force[1].AsNumber(), -load[1].AsNumber(), 1e-6 * std::abs(load[1].AsNumber()));
+  EXPECT_LT(std::hypot(force[0].AsNumber(), force[2].AsNumber()),
+            1e-2 * std::abs(load[1].AsNumber()));
   // The calibration's acceptance band (0.3 mm ± 0.03 mm).
   EXPECT_NEAR(GetNumber(summary, "max_penetration_m", "summary"), 3e-4, 3e-5);
   EXPECT_GT(GetNumber(summary, "peak_pressure_Pa", "summary"), 0);
   EXPECT_GT(GetNumber(summary, "contact_area_m2", "summary"), 0);
-  EXPECT_GT(GetNumber(summary, "contact_stiffness", "summary"), 0);
+  EXPECT_GT(GetNumber(summary, "contact_stiffness_Pa_per_m", "summary"), 0);
   std::ifstream vtu(*dir_ + "/auto/body_deformed.vtu");
   std::string first;
   std::getline(vtu, first);

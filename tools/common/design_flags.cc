@@ -19,9 +19,10 @@ DEFINE_int32(gamma_power, -1, "j in γ = κ·10^j when --gamma=auto");
 DEFINE_double(taubin_lambda, 0.5, "ψ's Taubin λ");
 DEFINE_double(taubin_mu, -0.53, "ψ's Taubin μ");
 DEFINE_int32(taubin_iterations, 1, "ψ's Taubin iterations m");
-DEFINE_string(
-    contact_stiffness, "scenario",
-    "penalty k in N/m, auto (calibrate to --target_penetration), or scenario (the preset's)");
+DEFINE_string(contact_stiffness, "scenario",
+              "contact stiffness κ in Pa/m (contact pressure per metre of penetration; a vertex's "
+              "spring is κ times its area), auto (calibrate to --target_penetration), or "
+              "scenario (the preset's)");
 DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
 
 namespace ergo {
@@ -53,7 +54,7 @@ void ApplyDesignFlags(Scenario* scenario) {
   if (FLAGS_contact_stiffness == "scenario") return;
   if (FLAGS_contact_stiffness != "auto") {
     const double k = ParseNonNegative(FLAGS_contact_stiffness, "contact_stiffness");
-    if (!(k > 0)) throw InputError("--contact_stiffness", "", "must be positive", "e.g. 2e4");
+    if (!(k > 0)) throw InputError("--contact_stiffness", "", "must be positive", "κ in Pa/m, e.g. 1e8");
     design.equilibrium.contact_stiffness = k;
     return;
   }

@@ -21,7 +21,7 @@ DEFINE_double(bump_edge_length, 0.012, "bump: target tet edge length of the ball
 DEFINE_int32(bump_plate_cells, 16, "bump: plate top-face cells per side");
 DEFINE_double(bump_height, 0.004, "bump: bump height, m");
 DEFINE_double(bump_width, 0.015, "bump: Gaussian sigma of the bump, m");
-DEFINE_double(bump_contact_stiffness, 2e3, "bump: contact stiffness k, N/m");
+DEFINE_double(bump_contact_stiffness, 3e7, "bump: contact stiffness κ, Pa/m");
 
 namespace ergo {
 namespace {

@@ -134,15 +134,17 @@ void ApplyCommonFlags(Options* o) {
   o->user_support = UserSupportFlags();
 }
 
-// The preset's contact stiffness was calibrated for its own meshes: say so when they change.
+// The preset's κ (Pa/m, independent of the mesh spacing) was calibrated for the generated
+// body and support: say so when the user brings their own.
 void WarnIfStiffnessUncalibrated(const char* scene) {
   std::string stiffness;  // --contact_stiffness lives with the design flags
   if (gflags::GetCommandLineOption("contact_stiffness", &stiffness) && stiffness != "scenario")
     return;
-  if (FLAGS_body_edge_length > 0 || FLAGS_support_edge_length > 0 || !FLAGS_body_dir.empty() ||
-      !FLAGS_tet_mesh.empty() || !FLAGS_skin.empty() || !FLAGS_support_mesh.empty()) {
+  if (!FLAGS_body_dir.empty() || !FLAGS_tet_mesh.empty() || !FLAGS_skin.empty() ||
+      !FLAGS_support_mesh.empty()) {
     std::cerr << "note: " << scene
-              << ": the preset's contact stiffness was calibrated for its own meshes; consider "
+              << ": the preset's contact stiffness κ was calibrated for the generated body and "
+                 "support (0.3 mm largest penetration); for your own, consider "
                  "--contact_stiffness=auto\n";
   }
 }

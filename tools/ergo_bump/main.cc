@@ -18,7 +18,8 @@ DEFINE_double(ball_radius, 0.05, "ball radius, m");
 DEFINE_double(core_radius, 0.03, "rigid core radius, m");
 DEFINE_double(youngs_modulus, 1e4, "tissue Young's modulus, Pa");
 DEFINE_double(edge_length, 0.01, "ball mesh edge length, m");
-DEFINE_double(contact_stiffness, 600, "penalty stiffness k, N/m (600: ≈ 0.3 mm on a flat plate)");
+DEFINE_double(contact_stiffness, 1e7,
+              "contact stiffness κ, Pa/m (1e7: ≈ 0.3 mm on a flat plate)");
 DEFINE_string(out, "bump_sweep.csv", "CSV output file");
 
 namespace ergo {

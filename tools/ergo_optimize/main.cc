@@ -100,6 +100,8 @@ Json SummaryJson(const Scenario& scenario, const DesignReport& initial,
   s["optimized_score"] = optimized.evaluation.phi;
   s["reduction_percent"] = 100.0 * (1.0 - optimized.evaluation.phi / initial.evaluation.phi);
   s["initial_zeta"] = initial.evaluation.zeta;
+  s["initial_skin_zeta"] = initial.evaluation.zeta_human;
+  s["initial_support_zeta"] = initial.evaluation.zeta_support;
   s["optimized_zeta"] = optimized.evaluation.zeta;
   s["gamma"] = gamma;
   s["wall_s"] = wall;

@@ -80,15 +80,7 @@ DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
   report.support = problem.SupportAt(x);
   report.evaluation = problem.Evaluate(x, false);
   if (!report.evaluation.ok) return report;
-  const Support support(report.support, "support");
-  TotalPotential potential(problem.body(), problem.options().equilibrium.contact_stiffness);
-  TotalPotential::Evaluation e;
-  potential.Evaluate(report.evaluation.equilibrium.state, support, HessianKind::kExact, false,
-                     nullptr, &e);
-  ContactPressureEvaluator evaluator(problem.body(), report.support.triangles,
-                                     report.support.vertices.rows(), problem.options().pressure);
-  report.pressures = evaluator.Evaluate(e.positions, e.contacts, report.support.vertices,
-                                        potential.contact_stiffness(), false);
+  report.pressures = report.evaluation.pressures;
   report.peak_pressure =
       ComputePressureStatistics(report.pressures.human.pressure, problem.body().skin().rest_areas)
           .peak;

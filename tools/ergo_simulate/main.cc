@@ -33,7 +33,9 @@ DEFINE_string(external_force, "0,0,0", "force on the core FX,FY,FZ in N");
 DEFINE_string(external_torque, "0,0,0", "torque on the core about its centre TX,TY,TZ in N·m");
 DEFINE_string(gravity, "0,-9.81,0", "gravity vector in m/s² (the paper's convention is −y)");
 DEFINE_string(lock, "tx,tz", "core DOFs to lock: any of tx,ty,tz,rx,ry,rz (or none)");
-DEFINE_string(contact_stiffness, "auto", "penalty stiffness k in N/m, or auto (calibrated)");
+DEFINE_string(contact_stiffness, "auto",
+              "contact stiffness κ in Pa/m (contact pressure per metre of penetration: a vertex's "
+              "spring is κ times its area), or auto (calibrated to --target_penetration)");
 DEFINE_double(target_penetration, 3e-4, "max penetration the auto stiffness aims at, m");
 DEFINE_string(place, "auto", "auto: move the body along the load to --gap above the support; none");
 DEFINE_double(gap, 1e-3, "gap left by --place=auto, m");
@@ -95,11 +97,12 @@ int Run() {
   options.relative_tolerance = FLAGS_tolerance;
   options.max_iterations = FLAGS_max_iterations;
   if (auto_stiffness) {
-    // A first guess from the load: spread over ~1 % of the skin's vertices at the target depth.
-    const double guess_vertices =
-        std::max(10.0, 0.01 * static_cast<double>(body.skin().vertices.size()));
+    // A first guess from the load: spread over ~1 % of the skin (at least ten vertices'
+    // areas) at the target depth.
+    const Eigen::VectorXd& areas = body.skin().rest_areas;
+    const double guess_area = std::max(10.0 * areas.mean(), 0.01 * areas.sum());
     options.contact_stiffness =
-        body.TotalLoad().norm() / (guess_vertices * FLAGS_target_penetration);
+        body.TotalLoad().norm() / (guess_area * FLAGS_target_penetration);
   } else {
     char* end = nullptr;
     options.contact_stiffness = std::strtod(FLAGS_contact_stiffness.c_str(), &end);
@@ -107,7 +110,7 @@ int Run() {
         !(options.contact_stiffness > 0) || !std::isfinite(options.contact_stiffness)) {
       throw InputError("--contact_stiffness", "",
                        "'" + FLAGS_contact_stiffness + "' is neither a positive number nor auto",
-                       "give k in N/m (e.g. 2e4) or auto");
+                       "give κ in Pa/m (e.g. 1e8) or auto");
     }
   }
 
@@ -141,13 +144,11 @@ int Run() {
   }
   std::cout << result.FullReport() << "\n";
 
-  // Pressures from the very contact set of the final state.
-  TotalPotential::Evaluation e;
-  solver.potential().Evaluate(result.state, support, HessianKind::kExact, false, nullptr, &e);
-  ContactPressureEvaluator evaluator(body, support_mesh.triangles, support_mesh.vertices.rows(),
-                                     PressureCostOptions());
-  const ContactPressures pressures = evaluator.Evaluate(
-      e.positions, e.contacts, support_mesh.vertices, solver.options().contact_stiffness, false);
+  // Pressures from the very springs of the final state (the solver's last evaluation).
+  const ContactPressureEvaluator evaluator(body, support_mesh.triangles,
+                                           support_mesh.vertices.rows(), PressureCostOptions());
+  const ContactPressures pressures =
+      evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
 
   std::filesystem::create_directories(FLAGS_out);
   const std::filesystem::path out(FLAGS_out);
@@ -170,7 +171,7 @@ int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "static contact equilibrium of a body on a support\n"
       "  ergo_simulate --body=DIR --support=FILE [--unit=mm] [--external_force=FX,FY,FZ]\n"
-      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=K|auto] --out=OUT");
+      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto] --out=OUT");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   try {

@@ -1,0 +1,196 @@
+#include "ergo/contact/surface_contact.h"
+
+#include <algorithm>
+#include <optional>
+
+#include <glog/logging.h>
+
+namespace ergo {
+
+double ContactSkinShare(const Eigen::VectorXd& skin_areas, const Eigen::VectorXd& support_areas,
+                        const std::vector<bool>& region) {
+  CHECK(region.empty() || region.size() == static_cast<size_t>(support_areas.size()));
+  auto median = [](std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+    return values[values.size() / 2];
+  };
+  std::vector<double> skin(skin_areas.data(), skin_areas.data() + skin_areas.size()), support;
+  for (Eigen::Index j = 0; j < support_areas.size(); ++j)
+    if ((region.empty() || region[j]) && support_areas[j] > 0) support.push_back(support_areas[j]);
+  const double a_skin = median(skin), a_support = median(support);
+  if (!(a_skin > 0) || !(a_support > 0)) return 0.5;
+  // ½ up to support vertices four times the skin's (spacing twice the skin's), then the
+  // support's share falls as 4ā_skin/(ā_support + 4ā_skin): continuous at ratio 4.
+  const double ratio = a_support / a_skin;
+  return std::clamp(ratio / (ratio + 4), 0.5, 0.99);
+}
+
+Eigen::Vector3d SurfaceContacts::TotalForceOnBody() const {
+  return skin_force.colwise().sum().transpose();
+}
+
+int SurfaceContacts::skin_vertices_in_contact() const {
+  int count = 0;
+  for (Eigen::Index v = 0; v < skin_load.size(); ++v) count += skin_load[v] > 0;
+  return count;
+}
+
+Eigen::Matrix3d SurfaceContacts::TranslationStiffness() const {
+  // A rigid translation e moves the skin vertex of a skin spring, or all skin feature
+  // vertices of a support spring; by translation invariance of E the summed feature block
+  // equals the (point, point) block in both cases.
+  Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
+  for (const Contact& contact : skin.contacts) stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
+  for (const Contact& contact : support.contacts)
+    stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
+  return stiffness;
+}
+
+SurfaceContact::SurfaceContact(const TriMesh& skin_rest, Eigen::VectorXi body_ids,
+                               Eigen::VectorXd skin_areas, const SurfaceContactOptions& options)
+    : skin_(skin_rest, "body skin"),
+      body_ids_(std::move(body_ids)),
+      skin_areas_(std::move(skin_areas)),
+      options_(options),
+      skin_positions_(skin_rest.vertices) {
+  CHECK_EQ(body_ids_.size(), skin_rest.vertices.rows());
+  CHECK_EQ(skin_areas_.size(), skin_rest.vertices.rows());
+  CHECK_GT(options.stiffness, 0.0);
+  CHECK(options.skin_share >= 0 && options.skin_share < 1);
+  body_vertex_count_ = body_ids_.size() > 0 ? body_ids_.maxCoeff() + 1 : 0;
+}
+
+SurfaceContact::SurfaceContact(const SurfaceContact& other)
+    : skin_(other.skin_),
+      body_ids_(other.body_ids_),
+      skin_areas_(other.skin_areas_),
+      options_(other.options_),
+      body_vertex_count_(other.body_vertex_count_),
+      clearance_(other.clearance_),
+      skin_hints_(other.skin_hints_),
+      skin_positions_(other.skin_positions_),
+      support_shape_(other.support_shape_) {
+  // The rebuilt tree has a new shape stamp: old hints seed searches but prove nothing.
+}
+
+void SurfaceContact::set_stiffness(double kappa) {
+  CHECK_GT(kappa, 0.0);
+  options_.stiffness = kappa;
+}
+
+void SurfaceContact::MoveSkin(const Vertices& body_positions, const Support& support) {
+  CHECK_GE(body_positions.rows(), body_vertex_count_);
+  if (options_.skin_share == 0) {
+    // The support's vertices near the body: inside the rest skin's box grown by its size.
+    const TriMesh& rest = skin_.mesh();
+    const Eigen::RowVector3d lo = rest.vertices.colwise().minCoeff(),
+                             hi = rest.vertices.colwise().maxCoeff();
+    const Eigen::RowVector3d margin = hi - lo;
+    std::vector<bool> near(static_cast<size_t>(support.mesh().vertices.rows()));
+    for (Eigen::Index j = 0; j < support.mesh().vertices.rows(); ++j) {
+      const Eigen::RowVector3d x = support.mesh().vertices.row(j);
+      near[j] = (x.array() >= (lo - margin).array()).all() && (x.array() <= (hi + margin).array()).all();
+    }
+    options_.skin_share = ContactSkinShare(skin_areas_, support.vertex_areas(), near);
+  }
+  Vertices positions(body_ids_.size(), 3);
+  for (Eigen::Index l = 0; l < body_ids_.size(); ++l) positions.row(l) = body_positions.row(body_ids_[l]);
+  const Eigen::Index support_count = support.mesh().vertices.rows();
+  if (support.shape() != support_shape_ || clearance_.size() != support_count) {
+    clearance_ = Eigen::VectorXd::Zero(support_count);
+    skin_hints_.assign(static_cast<size_t>(support_count), SupportPoint());
+    support_shape_ = support.shape();
+  } else {
+    // Every point of the skin moved at most as far as its farthest vertex (the surface is
+    // the vertices' piecewise-linear interpolation), so each bound shrinks by that much.
+    const double moved = (positions - skin_positions_).rowwise().norm().maxCoeff();
+    clearance_ = (clearance_.array() - moved).cwiseMax(0.0);
+  }
+  skin_positions_ = positions;
+  skin_.UpdateVertices(positions);
+}
+
+ContactSet SurfaceContact::SupportSprings(const Support& support, bool with_hessian) {
+  ContactSet set;
+  const Vertices& x = support.mesh().vertices;
+  const Eigen::VectorXd& areas = support.vertex_areas();
+  const auto count = static_cast<Eigen::Index>(x.rows());
+  std::vector<std::optional<Contact>> found(static_cast<size_t>(count));
+#pragma omp parallel for schedule(dynamic, 256) if (count >= 1024)
+  for (Eigen::Index j = 0; j < count; ++j) {
+    const Eigen::Vector3d p = x.row(j).transpose();
+    if (clearance_[j] > 0 || !skin_.InBoundingBox(p)) continue;
+    const double k = 0.5 * options_.stiffness * (1 - options_.skin_share) * areas[j];
+    if (!(k > 0)) continue;
+    SupportPoint& hint = skin_hints_[j];
+    hint = skin_.ClosestPoint(p, hint.triangle >= 0 ? &hint : nullptr);
+    if (!hint.inside) {
+      clearance_[j] = std::sqrt(hint.squared_distance);
+      continue;
+    }
+    Contact contact;
+    contact.point = static_cast<int>(j);
+    contact.anchor = hint;
+    contact.stiffness = k;
+    contact.spring = EvaluateSlidingAnchor(hint.feature.type, p, skin_.Positions(hint.feature), k,
+                                           with_hessian);
+    found[j] = contact;
+  }
+  for (Eigen::Index j = 0; j < count; ++j) {
+    if (!found[j]) continue;
+    set.energy += found[j]->spring.energy;
+    set.max_penetration = std::max(set.max_penetration, found[j]->penetration());
+    set.contacts.push_back(*found[j]);
+  }
+  return set;
+}
+
+void SurfaceContact::Evaluate(const Vertices& body_positions, const Support& support,
+                              bool with_hessian, std::vector<SupportPoint>* hints,
+                              SurfaceContacts* out) {
+  SurfaceContacts& c = *out;
+  MoveSkin(body_positions, support);
+  Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
+  for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
+    stiffness[body_ids_[l]] = 0.5 * options_.stiffness * options_.skin_share * skin_areas_[l];
+  c.skin = EvaluateContacts(support, body_positions, body_ids_, stiffness, with_hessian, hints);
+  c.support = SupportSprings(support, with_hessian);
+  c.energy = c.skin.energy + c.support.energy;
+  c.max_penetration = std::max(c.skin.max_penetration, c.support.max_penetration);
+
+  // Per-vertex forces: each spring pushes its point and, oppositely, its feature's vertices.
+  c.skin_force = Vertices::Zero(body_ids_.size(), 3);
+  c.support_force = Vertices::Zero(support.mesh().vertices.rows(), 3);
+  c.skin_share = options_.skin_share;
+  c.skin_load = Eigen::VectorXd::Zero(body_ids_.size());
+  c.support_load = Eigen::VectorXd::Zero(support.mesh().vertices.rows());
+  Eigen::VectorXi local_of = Eigen::VectorXi::Constant(body_positions.rows(), -1);
+  for (Eigen::Index l = 0; l < body_ids_.size(); ++l) local_of[body_ids_[l]] = static_cast<int>(l);
+  for (const Contact& contact : c.skin.contacts) {
+    c.skin_load[local_of[contact.point]] = contact.force().norm() / options_.skin_share;
+    c.skin_force.row(local_of[contact.point]) -= contact.spring.gradient.segment<3>(0).transpose();
+    for (int k = 0; k < contact.anchor.feature.size(); ++k)
+      c.support_force.row(contact.anchor.feature.vertices[k]) -=
+          contact.spring.gradient.segment<3>(3 + 3 * k).transpose();
+  }
+  for (const Contact& contact : c.support.contacts) {
+    c.support_load[contact.point] = contact.force().norm() / (1 - options_.skin_share);
+    c.support_force.row(contact.point) -= contact.spring.gradient.segment<3>(0).transpose();
+    for (int k = 0; k < contact.anchor.feature.size(); ++k)
+      c.skin_force.row(contact.anchor.feature.vertices[k]) -=
+          contact.spring.gradient.segment<3>(3 + 3 * k).transpose();
+  }
+}
+
+double SurfaceContact::Energy(const Vertices& body_positions, const Support& support,
+                              std::vector<SupportPoint>* hints) {
+  MoveSkin(body_positions, support);
+  Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
+  for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
+    stiffness[body_ids_[l]] = 0.5 * options_.stiffness * options_.skin_share * skin_areas_[l];
+  return EvaluateContacts(support, body_positions, body_ids_, stiffness, false, hints).energy +
+         SupportSprings(support, false).energy;
+}
+
+}  // namespace ergo
