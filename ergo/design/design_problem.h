@@ -38,7 +38,7 @@ struct DesignOptions {
   TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
   double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
   DesignParameterization parameterization = DesignParameterization::kPositions;
-  double filter_radius = 0;  // m, for DesignParameterization::kFiltered
+  double filter_radius = 0;   // m; the filter's radius r when parameterization == kFiltered
   std::vector<bool> active;   // movable support vertices; empty = all
   int warm_start_cache = 16;  // equilibria kept for warm starts
 };

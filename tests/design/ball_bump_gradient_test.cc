@@ -1,6 +1,7 @@
 // The adjoint gradient on the second scene of the issue: a soft ball (a layer meshed by the
 // body builder) resting on a plate with a Gaussian bump, core translating vertically only,
-// for both design parameterisations. The pit scene (design_gradient_test.cc) covers free
+// for the three design parameterisations (the filtered one checks the filter's pull-back
+// inside the whole adjoint chain). The pit scene (design_gradient_test.cc) covers free
 // core rotation and every Voronoi region type; here the support is smooth and fine and the
 // skin is a Mesh_3 surface.
 #include <cmath>
@@ -23,6 +24,7 @@ TEST_P(DesignGradientBallOnBump, AdjointGradientMatchesFiniteDifferences) {
   options.contact_stiffness = 1e7;  // κ, Pa/m
   Scenario scenario = MakeBumpScenario(options);
   scenario.design.parameterization = GetParam();
+  scenario.design.filter_radius = 0.025;  // m, about two skin edges; used by kFiltered only
   scenario.design.equilibrium.relative_tolerance = 1e-11;
   // Design only the plate's top vertices within 3 cm of the bump (keeps the component-wise
   // check affordable).
@@ -81,11 +83,18 @@ TEST_P(DesignGradientBallOnBump, AdjointGradientMatchesFiniteDifferences) {
 
 INSTANTIATE_TEST_SUITE_P(Parameterizations, DesignGradientBallOnBump,
                          ::testing::Values(DesignParameterization::kPositions,
-                                           DesignParameterization::kNormalDisplacement),
+                                           DesignParameterization::kNormalDisplacement,
+                                           DesignParameterization::kFiltered),
                          [](const auto& info) {
-                           return info.param == DesignParameterization::kPositions
-                                      ? std::string("positions")
-                                      : std::string("normal");
+                           switch (info.param) {
+                             case DesignParameterization::kPositions:
+                               return std::string("positions");
+                             case DesignParameterization::kNormalDisplacement:
+                               return std::string("normal");
+                             case DesignParameterization::kFiltered:
+                               return std::string("filtered");
+                           }
+                           return std::string("unknown");
                          });
 
 }  // namespace

@@ -65,28 +65,15 @@ std::string Format(const char* format, double value) {
   return buffer;
 }
 
-// The designed region smoothed by Taubin steps (non-designed vertices fixed), as a design.
+// The designed region smoothed by Taubin steps (non-designed vertices fixed), as the design
+// closest to it (exact for positions; the normal kinds keep the normal part of the smoothing).
 Eigen::VectorXd PostSmooth(const DesignProblem& problem, const Eigen::VectorXd& x, int iterations) {
   const TriMesh support = problem.SupportAt(x);
   const Eigen::VectorXi& active = problem.parameterization().active_vertices();
   std::vector<bool> fixed(static_cast<size_t>(support.vertices.rows()), true);
   for (Eigen::Index i = 0; i < active.size(); ++i) fixed[active[i]] = false;
   const TriMesh smoothed = TaubinSmooth(support, {0.5, -0.53, iterations}, fixed);
-  // Back to design variables: positions directly, or the displacement along the normals.
-  const SupportParameterization& p = problem.parameterization();
-  if (p.kind() == DesignParameterization::kPositions) {
-    Eigen::VectorXd y(x.size());
-    for (Eigen::Index i = 0; i < active.size(); ++i)
-      y.segment<3>(3 * i) = smoothed.vertices.row(active[i]).transpose();
-    return y;
-  }
-  const Vertices normals =
-      p.Positions(Eigen::VectorXd::Ones(x.size())) - p.Positions(Eigen::VectorXd::Zero(x.size()));
-  const Vertices base = p.Positions(Eigen::VectorXd::Zero(x.size()));
-  Eigen::VectorXd y(x.size());
-  for (Eigen::Index i = 0; i < active.size(); ++i)
-    y[i] = (smoothed.vertices.row(active[i]) - base.row(active[i])).dot(normals.row(active[i]));
-  return y;
+  return problem.parameterization().DesignFor(smoothed.vertices);
 }
 
 Json SummaryJson(const Scenario& scenario, const DesignReport& initial,
