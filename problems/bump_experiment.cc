@@ -41,8 +41,7 @@ std::vector<BumpSweepPoint> RunBumpFrequencySweep(const BumpScenarioOptions& bas
       warm = result.state;
       have_warm = true;
       for (int exponent : {2, 3, 4}) {
-        const ContactPressureEvaluator evaluator(*scenario.body, scenario.support.triangles,
-                                                 scenario.support.vertices.rows(),
+        const ContactPressureEvaluator evaluator(*scenario.body, scenario.support,
                                                  PressureCostOptions{exponent, 1.0});
         const ContactPressures pressures =
             evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());

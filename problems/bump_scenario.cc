@@ -62,6 +62,7 @@ Scenario MakeBumpScenario(const BumpScenarioOptions& o) {
                                                              o.youngs_modulus, o.poisson_ratio,
                                                              o.edge_length, centre, body_options));
   scenario.start = RestState(*scenario.body);
+  scenario.design.placement_gap = o.drop_height;
 
   scenario.design.equilibrium.contact_stiffness = o.contact_stiffness;
   scenario.design.parameterization = DesignParameterization::kNormalDisplacement;

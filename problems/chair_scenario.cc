@@ -50,6 +50,7 @@ Scenario MakeChairScenario(const ChairScenarioOptions& o, ScenarioBuildReport* r
   r.support_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "chair");
+  scenario.design.placement_gap = o.start_gap;
   r.start_seconds = SecondsSince(start);
   if (o.negative_image) {
     UseNegativeImage(o.negative, o.start_gap, &scenario, &r);
@@ -68,7 +69,7 @@ Scenario MakeChairScenario(const ChairScenarioOptions& o, ScenarioBuildReport* r
     support << "user support " << o.user_support.path;
   }
   FinishScenario("chair (" + o.preset + (o.negative_image ? ", negative image)" : ", flat)"),
-                 support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.parameterization,
+                 support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.design_space,
                  std::move(active), &scenario, &r);
   return scenario;
 }

@@ -92,6 +92,7 @@ Scenario MakeMouseScenario(const MouseScenarioOptions& o, ScenarioBuildReport* r
   r.support_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "mouse");
+  scenario.design.placement_gap = o.start_gap;
   r.start_seconds = SecondsSince(start);
   if (o.negative_image) UseNegativeImage(o.negative, o.start_gap, &scenario, &r);
   std::vector<bool> active =
@@ -109,7 +110,7 @@ Scenario MakeMouseScenario(const MouseScenarioOptions& o, ScenarioBuildReport* r
   }
   FinishScenario(
       std::string("mouse (") + o.preset + (o.negative_image ? ", negative image)" : ", neutral)"),
-      support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.parameterization,
+      support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.design_space,
       std::move(active), &scenario, &r);
   return scenario;
 }

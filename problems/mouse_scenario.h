@@ -46,7 +46,7 @@ struct MouseScenarioOptions {
   // the quick preset.
   double contact_stiffness = 2.8e8;
   double free_fall_mass_scale = 1e4;  // paper: 1e4 mouse
-  DesignParameterization parameterization = DesignParameterization::kNormalDisplacement;
+  DesignSpaceOptions design_space;  // filtered normal displacement; radii from the skin
   UserBodyInput user_body;
   UserSupportInput user_support;
 

@@ -1,5 +1,7 @@
 #include "problems/scenario_parts.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <chrono>
 #include <sstream>
@@ -271,9 +273,39 @@ void UseNegativeImage(const NegativeImageOptions& options, double gap, Scenario*
   }
 }
 
+double SkinEdgeNearDesign(const LayeredBody& body, const BodyState& state, const TriMesh& support,
+                          const std::vector<bool>& active) {
+  const Vertices positions = DeformedPositions(body, state);
+  const Triangles& triangles = body.skin().triangles;
+  double total = 0;
+  long count = 0;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int c = 0; c < 3; ++c, ++count)
+      total += (positions.row(triangles(f, c)) - positions.row(triangles(f, (c + 1) % 3))).norm();
+  const double mean = count > 0 ? total / static_cast<double>(count) : 0;
+  Eigen::AlignedBox3d box;
+  for (Eigen::Index v = 0; v < support.vertices.rows(); ++v)
+    if (active.empty() || active[v]) box.extend(support.vertices.row(v).transpose());
+  if (box.isEmpty()) return mean;
+  box.min().array() -= 2 * mean;
+  box.max().array() += 2 * mean;
+  double near_total = 0;
+  long near_count = 0;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector3d a = positions.row(triangles(f, c)),
+                            b = positions.row(triangles(f, (c + 1) % 3));
+      if (!box.contains(0.5 * (a + b))) continue;
+      near_total += (a - b).norm();
+      ++near_count;
+    }
+  }
+  return near_count > 0 ? near_total / static_cast<double>(near_count) : mean;
+}
+
 void FinishScenario(const std::string& description, const std::string& support_summary,
                     double contact_stiffness, double free_fall_mass_scale,
-                    DesignParameterization parameterization, std::vector<bool> active,
+                    const DesignSpaceOptions& design_space, std::vector<bool> active,
                     Scenario* scenario, ScenarioBuildReport* report) {
   ScenarioBuildReport& r = *report;
   const LayeredBody& body = *scenario->body;
@@ -295,8 +327,24 @@ void FinishScenario(const std::string& description, const std::string& support_s
   DesignOptions& design = scenario->design;
   design.equilibrium.contact_stiffness = contact_stiffness;
   design.equilibrium.free_fall_mass_scale = free_fall_mass_scale;
-  design.parameterization = parameterization;
   design.active = std::move(active);
+  r.skin_edge = SkinEdgeNearDesign(body, scenario->start, scenario->support, design.active);
+  design.parameterization = design_space.parameterization;
+  design.filter_radius =
+      design_space.filter_radius > 0 ? design_space.filter_radius : 2.5 * r.skin_edge;
+  design.pressure.smoothing_radius = design_space.pressure_smoothing_radius >= 0
+                                         ? design_space.pressure_smoothing_radius
+                                         : std::sqrt(3.0) * r.skin_edge;
+  std::ostringstream space;
+  space << "; skin edge near the design " << r.skin_edge * 1e3 << " mm";
+  if (design.parameterization == DesignParameterization::kFiltered)
+    space << ", design filter radius " << design.filter_radius * 1e3 << " mm";
+  if (design.pressure.smoothing_radius > 0) {
+    space << ", pressure smoothing radius " << design.pressure.smoothing_radius * 1e3 << " mm";
+  } else {
+    space << ", umbrella pressure smoothing";
+  }
+  r.support += space.str();
 }
 
 }  // namespace ergo

@@ -55,6 +55,18 @@ struct UserSupportInput {
   bool empty() const { return path.empty(); }
 };
 
+// The design space and the score's smoothing, as a scene chooses them (DESIGN.md §8).
+struct DesignSpaceOptions {
+  DesignParameterization parameterization = DesignParameterization::kFiltered;
+  // Radius r of the design filter, m; 0 = 2.5 × the skin's mean edge near the designed
+  // region (SkinEdgeNearDesign).
+  double filter_radius = 0;
+  // Radius of the Helmholtz pressure smoothing, m; 0 = the paper's umbrella Laplacian;
+  // negative = √3 × the skin's mean edge near the designed region (the umbrella's reach on
+  // the skin, kept when the support is refined).
+  double pressure_smoothing_radius = -1;
+};
+
 // Numbers of one scenario build, for reports and the README.
 struct ScenarioBuildReport {
   std::string body;        // one line about the body (vertices, mass, layer, quality)
@@ -66,6 +78,7 @@ struct ScenarioBuildReport {
   Eigen::Vector3d load = Eigen::Vector3d::Zero();  // weight + external force, N
   double body_seconds = 0, support_seconds = 0, negative_image_seconds = 0, start_seconds = 0;
   std::string negative_image;  // one line when a negative image was made
+  double skin_edge = 0;        // mean skin edge near the designed region, m
 };
 
 // Seconds since `start` (the build report's timings).
@@ -114,12 +127,18 @@ BodyState StartAbove(const LayeredBody& body, const TriMesh& support, double gap
 void UseNegativeImage(const NegativeImageOptions& options, double gap, Scenario* scenario,
                       ScenarioBuildReport* report);
 
+// The mean length of the skin's edges near the designed support vertices (`active`, all if
+// empty) with the body at `state`: edges whose midpoints lie within the designed vertices'
+// bounding box grown by twice the skin's mean edge; the skin's mean edge if there are none.
+double SkinEdgeNearDesign(const LayeredBody& body, const BodyState& state, const TriMesh& support,
+                          const std::vector<bool>& active);
+
 // Fills the report's counts and one-line support summary, the scenario's description
-// (prefix + counts) and its design options (stiffness, free-fall scale, parameterisation,
-// designed vertices).
+// (prefix + counts) and its design options (stiffness, free-fall scale, design space with
+// its radii resolved, designed vertices).
 void FinishScenario(const std::string& description, const std::string& support_summary,
                     double contact_stiffness, double free_fall_mass_scale,
-                    DesignParameterization parameterization, std::vector<bool> active,
+                    const DesignSpaceOptions& design_space, std::vector<bool> active,
                     Scenario* scenario, ScenarioBuildReport* report);
 
 }  // namespace ergo

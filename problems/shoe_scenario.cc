@@ -72,6 +72,7 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   r.support_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "shoe");
+  scenario.design.placement_gap = o.start_gap;
   r.start_seconds = SecondsSince(start);
   if (o.negative_image) {
     if (generated_sole && !(o.negative.depth < o.sole_thickness - 0.002)) {
@@ -99,7 +100,7 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   description << "shoe sole (" << o.preset << (o.negative_image ? ", negative image" : ", flat")
               << ", lean " << o.lean_torque << " N m)";
   FinishScenario(description.str(), support.str(), o.contact_stiffness, o.free_fall_mass_scale,
-                 o.parameterization, std::move(active), &scenario, &r);
+                 o.design_space, std::move(active), &scenario, &r);
   return scenario;
 }
 

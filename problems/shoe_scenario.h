@@ -39,7 +39,7 @@ struct ShoeScenarioOptions {
   // the quick preset's flat sole.
   double contact_stiffness = 8e8;
   double free_fall_mass_scale = 1e6;  // paper: 1e6 shoe
-  DesignParameterization parameterization = DesignParameterization::kNormalDisplacement;
+  DesignSpaceOptions design_space;  // filtered normal displacement; radii from the skin
   UserBodyInput user_body;
   UserSupportInput user_support;
 

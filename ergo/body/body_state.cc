@@ -21,6 +21,24 @@ BodyState TranslatedRestState(const LayeredBody& body, const Eigen::Vector3d& of
   return state;
 }
 
+BodyState MovedRigidly(const LayeredBody& body, const BodyState& state,
+                       const Eigen::Vector3d& translation, const Eigen::Vector3d& rotation) {
+  const Eigen::Matrix3d turn = RotationExp(rotation);
+  const Vertices positions = DeformedPositions(body, state);
+  const Vertices& rest = body.rest().vertices;
+  BodyState moved = state;
+  const Eigen::VectorXi& free = body.free_vertices();
+  for (Eigen::Index i = 0; i < free.size(); ++i) {
+    const Eigen::Vector3d p = positions.row(free[i]).transpose();
+    moved.free_displacement.segment<3>(3 * i) =
+        state.centre + turn * (p - state.centre) + translation - rest.row(free[i]).transpose();
+  }
+  moved.centre = state.centre + translation;
+  moved.rotation = turn * state.rotation;
+  moved.torque_angle = state.torque_angle + rotation;
+  return moved;
+}
+
 Vertices DeformedPositions(const LayeredBody& body, const BodyState& state) {
   const Vertices& rest = body.rest().vertices;
   Vertices positions(rest.rows(), 3);

@@ -25,6 +25,11 @@ BodyState RestState(const LayeredBody& body);
 // The rest body translated rigidly by `offset` (e.g. lifted above a support).
 BodyState TranslatedRestState(const LayeredBody& body, const Eigen::Vector3d& offset);
 
+// `state` moved rigidly: turned by the rotation vector `rotation` (rad) about the core centre,
+// then translated by `translation` (m). The external torque's work angle turns with it.
+BodyState MovedRigidly(const LayeredBody& body, const BodyState& state,
+                       const Eigen::Vector3d& translation, const Eigen::Vector3d& rotation);
+
 // World positions of every tet-mesh vertex (#V x 3).
 Vertices DeformedPositions(const LayeredBody& body, const BodyState& state);
 

@@ -24,22 +24,23 @@ struct ContactPressures {
 
 class ContactPressureEvaluator {
  public:
-  // Keeps a reference to `body`.
-  ContactPressureEvaluator(const LayeredBody& body, const Triangles& support_triangles,
-                           Eigen::Index support_vertex_count, const PressureCostOptions& options);
+  // Keeps a reference to `body`. The pressure smoothing is built on the skin at rest and on
+  // `support` (its initial shape: the operator does not move with the design).
+  ContactPressureEvaluator(const LayeredBody& body, const TriMesh& support,
+                           const PressureCostOptions& options);
 
   // Pressures and costs of both surfaces for the equilibrium's `contacts`, support vertex
   // areas `support_areas` (m²).
   ContactPressures Evaluate(SurfaceContacts contacts, const Eigen::VectorXd& support_areas) const;
 
-  const SparseMatrix& skin_laplacian() const { return skin_laplacian_; }
-  const SparseMatrix& support_laplacian() const { return support_laplacian_; }
+  const PressureSmoothing& skin_smoothing() const { return skin_smoothing_; }
+  const PressureSmoothing& support_smoothing() const { return support_smoothing_; }
   const PressureCostOptions& options() const { return options_; }
 
  private:
   const LayeredBody& body_;
   PressureCostOptions options_;
-  SparseMatrix skin_laplacian_, support_laplacian_;
+  PressureSmoothing skin_smoothing_, support_smoothing_;
 };
 
 }  // namespace ergo

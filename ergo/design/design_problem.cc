@@ -8,6 +8,7 @@
 
 #include "ergo/mesh/preconditioned_cg.h"
 #include "ergo/design/score_gradient.h"
+#include "ergo/equilibrium/placement.h"
 #include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
@@ -41,8 +42,9 @@ DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
       parameterization_(support, options.active, options.parameterization, options.filter_radius),
       support_laplacian_(UmbrellaLaplacian(support.triangles, support.vertices.rows())),
       support_(support, "support"),
-      pressures_(body, support.triangles, support.vertices.rows(), options.pressure),
+      pressures_(body, support, options.pressure),
       solver_(body, options_.equilibrium),
+      start_(start),
       last_state_(start),
       counters_(std::make_shared<DesignCounters>()) {
   adjoint_cholesky_.Analyze(solver_.potential().system().pattern());
@@ -58,6 +60,7 @@ DesignProblem::DesignProblem(const DesignProblem& other)
       pressures_(other.pressures_),
       solver_(other.solver_),
       adjoint_cholesky_(other.adjoint_cholesky_),
+      start_(other.start_),
       last_state_(other.last_state_),
       cache_(other.cache_),
       counters_(other.counters_) {}
@@ -69,6 +72,18 @@ void DesignProblem::set_contact_stiffness(double k) {
 
 TriMesh DesignProblem::SupportAt(const Eigen::VectorXd& x) const {
   return TriMesh{parameterization_.Positions(x), initial_support_.triangles};
+}
+
+void DesignProblem::set_start(const BodyState& start) {
+  start_ = start;
+  last_state_ = start;
+  cache_.clear();
+}
+
+BodyState DesignProblem::FreshStart() const {
+  const PlacementResult placed =
+      PlaceAboveSupport(body_, start_, support_, options_.placement_gap);
+  return placed.found ? placed.state : start_;
 }
 
 BodyState DesignProblem::WarmStart(const Eigen::VectorXd& x) const {
@@ -108,7 +123,8 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   // Equilibrium on the support at x (Eq. 7–9).
   const Vertices support_positions = parameterization_.Positions(x);
   support_.UpdateVertices(support_positions);
-  out.equilibrium = solver_.Solve(support_, WarmStart(x));
+  out.equilibrium = solver_.Solve(
+      support_, options_.placement == DesignPlacement::kFresh ? FreshStart() : WarmStart(x));
   counters_->newton_iterations += out.equilibrium.iterations;
   if (!out.equilibrium.converged)
     return fail("equilibrium failed: " + out.equilibrium.BriefReport());

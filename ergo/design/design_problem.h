@@ -32,8 +32,22 @@
 
 namespace ergo {
 
+// Where each evaluation's equilibrium starts.
+enum class DesignPlacement {
+  // The body placed afresh: the start pose moved along the load to `placement_gap` above
+  // the support at x, as a person steps onto the printed part. The score is then a function
+  // of the design alone (DESIGN.md §8), and a design is judged as it will be used.
+  kFresh,
+  // Warm-started from the equilibrium of the nearest design evaluated before (the paper's
+  // §4.1): cheaper, but contact with a sculpted support can have several nearby equilibria,
+  // and a gain may exist only on the path the optimiser followed.
+  kFollowed,
+};
+
 struct DesignOptions {
   EquilibriumOptions equilibrium;
+  DesignPlacement placement = DesignPlacement::kFresh;
+  double placement_gap = 1e-3;  // m, for kFresh
   PressureCostOptions pressure;            // exponent e, smoothing λ_p
   TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
   double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
@@ -85,6 +99,7 @@ class DesignProblem {
   const DesignOptions& options() const { return options_; }
   const TriMesh& initial_support() const { return initial_support_; }
   void set_gamma(double gamma) { options_.gamma = gamma; }
+  void set_placement(DesignPlacement placement) { options_.placement = placement; }
   void set_contact_stiffness(double k);
 
   // φ, ζ, ψ (and with_gradient: their gradients) at design x. Thread-compatible: one
@@ -97,9 +112,15 @@ class DesignProblem {
   const DesignCounters& counters() const { return *counters_; }
   // The most recent converged equilibrium state (for warm starts elsewhere).
   const BodyState& last_state() const { return last_state_; }
+  // The start pose (kFresh evaluations are placed from it).
+  const BodyState& start() const { return start_; }
+  // Moves the start pose (a different placement of the same body); clears the warm starts.
+  void set_start(const BodyState& start);
 
  private:
   BodyState WarmStart(const Eigen::VectorXd& x) const;
+  // The start pose placed `placement_gap` above the current support (kFresh).
+  BodyState FreshStart() const;
   void Remember(const Eigen::VectorXd& x, const BodyState& state);
 
   const LayeredBody& body_;
@@ -111,6 +132,7 @@ class DesignProblem {
   ContactPressureEvaluator pressures_;  // skin/support springs → pressures
   EquilibriumSolver solver_;
   SparseCholesky adjoint_cholesky_;  // exact K̂ at y*, same pattern as Newton
+  BodyState start_;  // the placement every kFresh evaluation starts from
   BodyState last_state_;
   std::vector<std::pair<Eigen::VectorXd, BodyState>> cache_;
   std::shared_ptr<DesignCounters> counters_;

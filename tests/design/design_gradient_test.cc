@@ -23,6 +23,8 @@ struct Case {
   std::string name;
   std::string lock;
   DesignParameterization parameterization;
+  double smoothing_radius = 0;  // pressure smoothing: 0 = umbrella, else Helmholtz, m
+  double filter_radius = 0;     // for kFiltered, m
 };
 
 // A 10 cm soft hollow cube standing on a corner in a coarse square pyramid pit (45° facets,
@@ -64,14 +66,16 @@ PitScene MakePitScene(const std::string& lock) {
 }
 
 DesignOptions TightOptions(DesignParameterization parameterization,
-                           const std::vector<bool>& active) {
+                           const std::vector<bool>& active, double smoothing_radius = 0,
+                           double filter_radius = 0) {
   DesignOptions options;
   options.equilibrium.contact_stiffness = 3e7;  // κ, Pa/m
   // Tight equilibria: the FD quotient differences φ at x ± h d; an equilibrium error δy
   // would enter as |∂φ/∂y| δy / h.
   options.equilibrium.relative_tolerance = 1e-11;
   options.equilibrium.max_iterations = 200;
-  options.pressure = {3, 1.0};
+  options.pressure = {3, 1.0, smoothing_radius};
+  options.filter_radius = filter_radius;
   options.taubin = {0.5, -0.53, 2};
   options.gamma = 0;  // set per check
   options.parameterization = parameterization;
@@ -123,7 +127,8 @@ TEST_P(DesignGradient, AdjointGradientMatchesFiniteDifferencesThroughTheEquilibr
   const Case& c = GetParam();
   const PitScene scene = MakePitScene(c.lock);
   DesignProblem problem(scene.body, scene.support, scene.start,
-                        TightOptions(c.parameterization, scene.active));
+                        TightOptions(c.parameterization, scene.active, c.smoothing_radius,
+                                     c.filter_radius));
   const Eigen::VectorXd x0 = problem.InitialDesign();
   // γ of the same order as ζ/ψ so that both parts matter in φ.
   DesignEvaluation at = problem.Evaluate(x0, true);
@@ -192,7 +197,11 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"rotation_free_positions", "tx,tz", DesignParameterization::kPositions},
         Case{"rotation_locked_positions", "tx,tz,rx,ry,rz", DesignParameterization::kPositions},
         Case{"rotation_free_normal", "tx,tz", DesignParameterization::kNormalDisplacement},
-        Case{"pitch_only_normal", "tx,tz,rx,ry", DesignParameterization::kNormalDisplacement}),
+        Case{"pitch_only_normal", "tx,tz,rx,ry", DesignParameterization::kNormalDisplacement},
+        // The scenarios' default: the filtered design space and the Helmholtz pressure
+        // smoothing (radii of the order of the cube's 3.3 cm skin edge).
+        Case{"rotation_free_filtered_helmholtz", "tx,tz", DesignParameterization::kFiltered,
+             0.05, 0.08}),
     [](const auto& info) { return info.param.name; });
 
 TEST(DesignGradientFailure, ANonConvergingEquilibriumGivesAClearFailureNotANumber) {

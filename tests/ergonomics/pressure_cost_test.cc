@@ -3,7 +3,10 @@
 #include "ergo/ergonomics/pressure_cost.h"
 
 #include <cmath>
+#include <algorithm>
+#include <iostream>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -16,30 +19,33 @@
 namespace ergo {
 namespace {
 
-class ErgonomicsUniform : public ::testing::TestWithParam<std::tuple<int, double>> {};
+class ErgonomicsUniform
+    : public ::testing::TestWithParam<std::tuple<int, double, double>> {};
 
 // A uniform pressure p on a closed surface of area A: every smoothing leaves it uniform
-// (rows of L sum to zero), so ζ = Σ s_i p^e = A p^e.
+// (rows of L sum to zero; the Helmholtz filter passes constants, K·1 = 0), so
+// ζ = Σ s_i p^e = A p^e.
 TEST_P(ErgonomicsUniform, UniformPressureGivesAreaTimesPressureToTheExponent) {
-  const auto [exponent, smoothing] = GetParam();
+  const auto [exponent, smoothing, radius] = GetParam();
   const TriMesh box = MakeBox({0, 0, 0}, {0.5, 0.2, 0.5}, {5, 2, 5});
   const Eigen::VectorXd area = BarycentricVertexAreas(box);
   const double p = 1234.5, total_area = 2 * (0.5 * 0.2 + 0.2 * 0.5 + 0.5 * 0.5);
-  const SurfacePressure result = EvaluateSurfacePressure(
-      p * area, area, UmbrellaLaplacian(box.triangles, box.vertices.rows()), {exponent, smoothing});
+  const PressureCostOptions options{exponent, smoothing, radius};
+  const SurfacePressure result =
+      EvaluateSurfacePressure(p * area, area, MakePressureSmoothing(box, options), options);
   EXPECT_NEAR(result.cost, total_area * std::pow(p, exponent),
-              1e-12 * total_area * std::pow(p, exponent));
+              1e-9 * total_area * std::pow(p, exponent));
   EXPECT_LT((result.smoothed.array() - p).abs().maxCoeff(), 1e-9 * p);
 }
 
 INSTANTIATE_TEST_SUITE_P(ExponentsAndSmoothing, ErgonomicsUniform,
                          ::testing::Combine(::testing::Values(2, 3, 4),
-                                            ::testing::Values(0.0, 0.5, 1.0)));
+                                            ::testing::Values(0.0, 0.5, 1.0),
+                                            ::testing::Values(0.0, 0.05)));
 
 TEST(Ergonomics, PressureCostDerivativesMatchFiniteDifferences) {
   const TriMesh sphere = MakeIcosphere(0.1, 2);
   const Eigen::Index n = sphere.vertices.rows();
-  const SparseMatrix laplacian = UmbrellaLaplacian(sphere.triangles, n);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> uniform(0.5, 1.5);
   Eigen::VectorXd forces(n), areas(n);
@@ -49,8 +55,10 @@ TEST(Ergonomics, PressureCostDerivativesMatchFiniteDifferences) {
   }
   for (int exponent : {2, 3, 4}) {
     for (double smoothing : {0.0, 0.7, 1.0}) {
-      const PressureCostOptions options{exponent, smoothing};
-      const SurfacePressure at = EvaluateSurfacePressure(forces, areas, laplacian, options);
+     for (double radius : {0.0, 0.04}) {  // umbrella, and a Helmholtz filter of 4 cm
+      const PressureCostOptions options{exponent, smoothing, radius};
+      const PressureSmoothing smoother = MakePressureSmoothing(sphere, options);
+      const SurfacePressure at = EvaluateSurfacePressure(forces, areas, smoother, options);
       // Variables: forces of contact vertices (a zero force is a kink) and all areas.
       Eigen::VectorXd x(2 * n), gradient(2 * n);
       x << forces, areas;
@@ -61,15 +69,52 @@ TEST(Ergonomics, PressureCostDerivativesMatchFiniteDifferences) {
         Eigen::VectorXd f = v.head(n);
         for (Eigen::Index i = 0; i < n; ++i)
           if (forces[i] == 0) f[i] = 0;  // stay off the kink
-        return EvaluateSurfacePressure(f, v.tail(n), laplacian, options).cost;
+        return EvaluateSurfacePressure(f, v.tail(n), smoother, options).cost;
       };
       std::string report;
       // ζ is a polynomial in ‖f‖ and 1/s here: smooth; 1e-7 allows the sweep's round-off.
       const double error = testing::WorstGradientError(
           cost, gradient, x, 1e-6 * gradient.norm(), testing::StepSweep(1e-6, 5), 6, 0, 1, &report);
-      EXPECT_LT(error, 1e-7) << "e=" << exponent << " λ=" << smoothing << "\n" << report;
+      EXPECT_LT(error, 1e-7) << "e=" << exponent << " λ=" << smoothing << " r=" << radius << "\n"
+                             << report;
+     }
     }
   }
+}
+
+// The same pressure field (a smooth bump with a hot spot of σ = 1 cm) on a plate meshed at
+// 10, 5 and 2.5 mm: ζ with the Helmholtz smoothing of one radius agrees across the three,
+// where the paper's umbrella smoothing (reach: one ring) does not — it smooths a 10 mm mesh
+// four times as far as a 2.5 mm one.
+TEST(Ergonomics, HelmholtzPressureSmoothingGivesTheSameScoreOnEveryMesh) {
+  auto pressure_at = [](const Eigen::Vector3d& x) {
+    const double r2 = (x.x() * x.x() + x.z() * x.z());
+    const double hot = (x.x() - 0.01) * (x.x() - 0.01) + (x.z() + 0.02) * (x.z() + 0.02);
+    return 5e4 * std::exp(-r2 / (2 * 0.03 * 0.03)) + 1e5 * std::exp(-hot / (2 * 0.01 * 0.01));
+  };
+  std::vector<double> helmholtz, umbrella;
+  for (int cells : {16, 32, 64}) {  // 160 mm plate: 10, 5, 2.5 mm
+    const TriMesh plate = MakeBox({-0.08, -0.02, -0.08}, {0.08, 0, 0.08}, {cells, 1, cells});
+    const Eigen::VectorXd area = BarycentricVertexAreas(plate);
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(plate.vertices.rows());
+    for (Eigen::Index v = 0; v < plate.vertices.rows(); ++v)
+      if (plate.vertices(v, 1) > -1e-9) load[v] = pressure_at(plate.vertices.row(v)) * area[v];
+    for (double radius : {0.0, 0.0173}) {
+      const PressureCostOptions options{3, 1.0, radius};
+      const double zeta =
+          EvaluateSurfacePressure(load, area, MakePressureSmoothing(plate, options), options).cost;
+      (radius > 0 ? helmholtz : umbrella).push_back(zeta);
+    }
+  }
+  auto spread = [](const std::vector<double>& v) {
+    return (*std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end())) /
+           *std::min_element(v.begin(), v.end());
+  };
+  std::cout << "zeta at 10/5/2.5 mm: Helmholtz " << helmholtz[0] << " " << helmholtz[1] << " "
+            << helmholtz[2] << " (spread " << spread(helmholtz) << "), umbrella " << umbrella[0]
+            << " " << umbrella[1] << " " << umbrella[2] << " (spread " << spread(umbrella) << ")\n";
+  EXPECT_LT(spread(helmholtz), 0.02);
+  EXPECT_GT(spread(umbrella), 0.1);  // the defect the filter removes
 }
 
 TEST(Ergonomics, SmoothnessOfTheOctahedronIsHandComputed) {

@@ -24,6 +24,11 @@ DEFINE_string(contact_stiffness, "scenario",
               "spring is κ times its area), auto (calibrate to --target_penetration), or "
               "scenario (the preset's)");
 DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
+DEFINE_string(placement, "fresh",
+              "where each evaluation's equilibrium starts: fresh (the body placed afresh from its "
+              "start pose on every design, as a person steps onto the part: the score is a "
+              "function of the design) or followed (warm-started from the nearest design "
+              "evaluated before, the paper's: cheaper, but a gain may hold only on that path)");
 
 namespace ergo {
 namespace {
@@ -48,7 +53,16 @@ void ApplyDesignFlags(Scenario* scenario) {
     throw InputError("--pressure_smoothing", "", "must lie in [0, 1]", "use 1 (the paper) or less");
   if (FLAGS_taubin_iterations < 1)
     throw InputError("--taubin_iterations", "", "must be at least 1", "e.g. 1");
-  design.pressure = {FLAGS_exponent, FLAGS_pressure_smoothing};
+  if (FLAGS_placement == "fresh") {
+    design.placement = DesignPlacement::kFresh;
+  } else if (FLAGS_placement == "followed") {
+    design.placement = DesignPlacement::kFollowed;
+  } else {
+    throw InputError("--placement", "", "'" + FLAGS_placement + "' is unknown",
+                     "use fresh or followed");
+  }
+  design.pressure.exponent = FLAGS_exponent;
+  design.pressure.smoothing = FLAGS_pressure_smoothing;
   design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};
 
   if (FLAGS_contact_stiffness == "scenario") return;
@@ -67,7 +81,6 @@ void ApplyDesignFlags(Scenario* scenario) {
                                 FLAGS_target_penetration, CalibrationOptions(), &last);
   std::cout << "  stiffness calibration: " << calibration.BriefReport() << "\n";
   design.equilibrium.contact_stiffness = solver.options().contact_stiffness;
-  if (last.converged) scenario->start = last.state;
 }
 
 double ApplyGammaFlags(DesignProblem* problem) {

@@ -12,8 +12,8 @@
 namespace ergo {
 
 // Applies --exponent, --pressure_smoothing, --taubin_* and --contact_stiffness to
-// scenario->design (calibrating k on the initial support for --contact_stiffness=auto, which
-// also moves scenario->start to the calibrated equilibrium). Prints what it decided.
+// scenario->design (calibrating κ on the initial support for --contact_stiffness=auto; the
+// start pose stays where the scene put it, above the support). Prints what it decided.
 // Throws InputError naming the flag for unusable values.
 void ApplyDesignFlags(Scenario* scenario);
 

@@ -1,6 +1,8 @@
 #include "tools/common/scene_flags.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -28,9 +30,18 @@ DEFINE_double(support_edge_length, 0,
 DEFINE_double(start_gap, -1, "the body starts this far above the support, m; negative = scene's");
 DEFINE_string(lock, "",
               "core DOFs held fixed, e.g. tx,tz (chair), tx,tz,ry,rz (shoe); empty = the scene's");
-DEFINE_string(parameterization, "normal",
-              "design variables: normal (one displacement along the initial normal per designed "
-              "vertex) or positions (three coordinates per designed vertex)");
+DEFINE_string(parameterization, "filtered",
+              "design variables: filtered (one per designed vertex, moving the surface along its "
+              "normals through a Helmholtz filter of radius --filter_radius: mesh-independent), "
+              "normal (the raw displacement along the initial normal per designed vertex) or "
+              "positions (three raw coordinates per designed vertex)");
+DEFINE_string(filter_radius, "auto",
+              "radius r of the design filter, m, or auto (2.5 × the skin's mean edge near the "
+              "designed region)");
+DEFINE_string(pressure_smoothing_radius, "auto",
+              "radius of the Helmholtz smoothing of the pressures before scoring, m; auto (√3 × "
+              "the skin's mean edge near the designed region: the paper's one-ring reach on the "
+              "skin, kept on any support mesh) or umbrella (the paper's umbrella Laplacian)");
 // A user's body instead of the generated one.
 DEFINE_string(body_dir, "", "a body directory written by `ergo_body build` (replaces the body)");
 DEFINE_string(tet_mesh, "",
@@ -76,11 +87,37 @@ LengthUnit UnitFlag(const std::string& text, const char* flag) {
   return unit;
 }
 
-DesignParameterization ParameterizationFlag() {
-  if (FLAGS_parameterization == "normal") return DesignParameterization::kNormalDisplacement;
-  if (FLAGS_parameterization == "positions") return DesignParameterization::kPositions;
-  throw InputError("--parameterization", "", "'" + FLAGS_parameterization + "' is unknown",
-                   "use normal or positions");
+// A positive length in metres from a flag, or `fallback` for the flag's word (auto, ...).
+double LengthFlag(const std::string& text, const char* flag, const char* word, double fallback) {
+  if (text == word) return fallback;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || !(value > 0) ||
+      value > 10) {
+    throw InputError(std::string("--") + flag, "", "'" + text + "' is not a length in metres",
+                     std::string("give e.g. 0.02 (m) or ") + word);
+  }
+  return value;
+}
+
+DesignSpaceOptions DesignSpaceFlags() {
+  DesignSpaceOptions space;
+  if (FLAGS_parameterization == "filtered") {
+    space.parameterization = DesignParameterization::kFiltered;
+  } else if (FLAGS_parameterization == "normal") {
+    space.parameterization = DesignParameterization::kNormalDisplacement;
+  } else if (FLAGS_parameterization == "positions") {
+    space.parameterization = DesignParameterization::kPositions;
+  } else {
+    throw InputError("--parameterization", "", "'" + FLAGS_parameterization + "' is unknown",
+                     "use filtered, normal or positions");
+  }
+  space.filter_radius = LengthFlag(FLAGS_filter_radius, "filter_radius", "auto", 0);
+  space.pressure_smoothing_radius =
+      FLAGS_pressure_smoothing_radius == "umbrella"
+          ? 0
+          : LengthFlag(FLAGS_pressure_smoothing_radius, "pressure_smoothing_radius", "auto", -1);
+  return space;
 }
 
 UserBodyInput UserBodyFlags() {
@@ -129,7 +166,7 @@ void ApplyCommonFlags(Options* o) {
     throw InputError("--support_edge_length", "", "must not be negative", "0 keeps the preset's");
   if (FLAGS_start_gap >= 0) o->start_gap = FLAGS_start_gap;
   if (!FLAGS_lock.empty()) o->lock = FLAGS_lock;
-  o->parameterization = ParameterizationFlag();
+  o->design_space = DesignSpaceFlags();
   o->user_body = UserBodyFlags();
   o->user_support = UserSupportFlags();
 }

@@ -15,10 +15,12 @@
 #include <iostream>
 #include <sstream>
 
+#include <Eigen/Geometry>
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 #include <omp.h>
 
+#include "ergo/design/placement_checks.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
@@ -48,6 +50,10 @@ DEFINE_int32(threads, 0,
              "threads for assembly, contact and the probes' equilibria (0 = all cores)");
 DEFINE_bool(plot, true, "write PNG pictures with tools/plot_results.py (python3 + matplotlib)");
 DEFINE_bool(progress, true, "print one line per iteration");
+DEFINE_double(placement_shift_mm, 3,
+              "placement checks: the body lands this far off along each horizontal axis, mm");
+DEFINE_double(placement_tilt_deg, 1,
+              "placement checks: and tilted by this much about each free rotation axis, degrees");
 
 namespace ergo {
 namespace {
@@ -248,6 +254,24 @@ int Run() {
   } else {
     std::cout << "fresh placement on the optimised design failed: " << placed.message << "\n";
   }
+  // Placement checks: the body landing 3 mm off along each horizontal axis, or tilted 1°.
+  Json checks = Json::Array();
+  for (const Placement& placement :
+       PlacementChecks(*scenario.body, 1e-3 * FLAGS_placement_shift_mm,
+                       FLAGS_placement_tilt_deg * M_PI / 180, /*with_tilts=*/true)) {
+    DesignProblem at_initial = PlacedProblem(fresh, placement);
+    DesignProblem at_optimized = PlacedProblem(fresh, placement);
+    const DesignEvaluation a = at_initial.Evaluate(x0, false);
+    const DesignEvaluation b = at_optimized.Evaluate(optimized.x, false);
+    std::cout << "placement " << placement.name << ": initial φ/φ₀ " << (a.ok ? a.phi / phi0 : NAN)
+              << ", optimised " << (b.ok ? b.phi / phi0 : NAN) << " (reduction "
+              << (a.ok && b.ok ? 100 * (1 - b.phi / a.phi) : NAN) << " %)\n";
+    Json c = Json::Object();
+    c["name"] = placement.name;
+    c["initial_score"] = a.ok ? a.phi : NAN;
+    c["score"] = b.ok ? b.phi : NAN;
+    checks.Append(c);
+  }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
@@ -260,7 +284,17 @@ int Run() {
   Json summary = SummaryJson(scenario, initial, optimized, result, gamma, wall,
                              design.equilibrium.contact_stiffness);
   summary["fresh_placement_converged"] = placed.ok;
+  summary["placement_checks"] = checks;
+  auto pose = [](const BodyState& state) {
+    Json p = Json::Array();
+    for (int k = 0; k < 3; ++k) p.Append(state.centre[k]);
+    const Eigen::AngleAxisd angle(state.rotation);
+    for (int k = 0; k < 3; ++k) p.Append(angle.angle() * angle.axis()[k]);
+    return p;
+  };
+  summary["followed_core_pose"] = pose(optimized.evaluation.equilibrium.state);
   if (placed.ok) {
+    summary["fresh_core_pose"] = pose(placed.equilibrium.state);
     summary["fresh_placement_score"] = placed.phi;
     summary["fresh_placement_reduction_percent"] = 100.0 * (1.0 - placed.phi / phi0);
   }

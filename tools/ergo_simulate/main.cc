@@ -145,8 +145,7 @@ int Run() {
   std::cout << result.FullReport() << "\n";
 
   // Pressures from the very springs of the final state (the solver's last evaluation).
-  const ContactPressureEvaluator evaluator(body, support_mesh.triangles,
-                                           support_mesh.vertices.rows(), PressureCostOptions());
+  const ContactPressureEvaluator evaluator(body, support_mesh, PressureCostOptions());
   const ContactPressures pressures =
       evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
 

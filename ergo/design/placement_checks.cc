@@ -1,0 +1,57 @@
+#include "ergo/design/placement_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <cstdio>
+
+namespace ergo {
+
+std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, double angle,
+                                       bool with_tilts) {
+  const Eigen::Vector3d load = body.TotalLoad();
+  const Eigen::Vector3d down = load.norm() > 0 ? load.normalized() : Eigen::Vector3d(0, -1, 0);
+  // The two world axes least aligned with the load.
+  std::array<int, 3> axes = {0, 1, 2};
+  std::sort(axes.begin(), axes.end(),
+            [&](int a, int b) { return std::abs(down[a]) < std::abs(down[b]); });
+  constexpr const char* kAxis[3] = {"x", "y", "z"};
+  std::vector<Placement> checks;
+  char label[64];
+  for (int axis : {std::min(axes[0], axes[1]), std::max(axes[0], axes[1])}) {
+    for (double sign : {1.0, -1.0}) {
+      Placement p;
+      Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
+      e = (e - e.dot(down) * down).normalized();
+      p.shift = sign * shift * e;
+      std::snprintf(label, sizeof(label), "%s%+gmm", kAxis[axis], sign * shift * 1e3);
+      p.name = label;
+      checks.push_back(p);
+    }
+  }
+  if (with_tilts) {
+    for (int component : body.lock().FreeComponents()) {
+      if (component < 3) continue;
+      const int axis = component - 3;
+      if (std::abs(down[axis]) > 0.5) continue;  // a yaw about the load: no tilt
+      for (double sign : {1.0, -1.0}) {
+        Placement p;
+        p.tilt = sign * angle * Eigen::Vector3d::Unit(axis);
+        std::snprintf(label, sizeof(label), "r%s%+gdeg", kAxis[axis], sign * angle * 180 / M_PI);
+        p.name = label;
+        checks.push_back(p);
+      }
+    }
+  }
+  return checks;
+}
+
+DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& placement) {
+  DesignProblem placed(problem);
+  placed.set_placement(DesignPlacement::kFresh);
+  placed.set_start(
+      MovedRigidly(problem.body(), problem.start(), placement.shift, placement.tilt));
+  return placed;
+}
+
+}  // namespace ergo

@@ -1,0 +1,34 @@
+// Placement checks: how a design scores when the body lands a little off the pose the
+// optimiser saw — shifted a few millimetres across the support, tilted by a degree — as a
+// person never sits, stands or grips twice in exactly the same place (DESIGN.md §8). Each
+// check places the body afresh (DesignPlacement::kFresh) from the moved start pose on its own
+// copy of the problem. Units: m, rad.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "ergo/design/design_problem.h"
+
+namespace ergo {
+
+// A rigid change of the start pose: turned by `tilt` (rotation vector about the core
+// centre) and shifted by `shift`.
+struct Placement {
+  std::string name;  // e.g. "x+3mm", "pitch-1deg", "centred"
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tilt = Eigen::Vector3d::Zero();
+};
+
+// ±shift along the two world axes most nearly perpendicular to the body's load, and, when
+// with_tilts, ±angle about each free core rotation axis perpendicular to the load.
+std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, double angle,
+                                       bool with_tilts);
+
+// A copy of `problem` whose evaluations place the body afresh from its start pose moved by
+// `placement`.
+DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& placement);
+
+}  // namespace ergo
