@@ -4,6 +4,8 @@
 // mesh_check_surface.cc, tetrahedron checks in mesh_check_volume.cc.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -62,6 +64,19 @@ void CheckSurface(const TriMesh& mesh, const std::vector<int>& weld, const Conte
 
 // Tetrahedron checks.
 void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* report);
+
+// Hash of an element's sorted vertex ids, to find duplicate elements in linear time.
+struct VertexIdsHash {
+  template <size_t N>
+  size_t operator()(const std::array<int, N>& ids) const {
+    uint64_t hash = 0x9E3779B97F4A7C15u;
+    for (const int id : ids) {
+      hash = (hash ^ static_cast<uint32_t>(id)) * 0xFF51AFD7ED558CCDu;
+      hash ^= hash >> 32;
+    }
+    return static_cast<size_t>(hash);
+  }
+};
 
 // "(0.1, -0.25, 3)" in metres.
 std::string FormatPoint(const Eigen::Vector3d& p);
