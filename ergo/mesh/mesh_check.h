@@ -41,6 +41,8 @@ struct MeshIssue {
   Severity severity = Severity::kNote;
   std::string code;                   // stable short name, e.g. "non-manifold-edge"
   std::string location;               // where, for findings about one place ("line 12"); often ""
+  std::string file;                   // the file `location` is in, if not the checked one
+                                      // (the other file of a TetGen pair); usually ""
   std::string what;                   // e.g. "12 edges are shared by more than two triangles"
   std::string fix;                    // what to do about it; "" for plain notes
   int64_t count = 0;                  // elements concerned (0 for whole-file findings)

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,17 @@ void CheckSurface(const TriMesh& mesh, const std::vector<int>& weld, const Conte
 
 // Tetrahedron checks.
 void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* report);
+
+// Lengths, areas and volumes of the checks are computed in long double, whose exponent range
+// (to 1e4932 on x86-64 and aarch64) holds the squares and cubes of any finite double: a mesh
+// with coordinates of 1e300 gets its true size and shapes instead of infinities.
+using WideVector = Eigen::Matrix<long double, 3, 1>;
+static_assert(std::numeric_limits<long double>::max_exponent10 >
+                  3 * std::numeric_limits<double>::max_exponent10,
+              "the mesh check needs a long double that holds the cube of any double");
+inline WideVector WidePoint(const Vertices& vertices, Eigen::Index v) {
+  return vertices.row(v).transpose().cast<long double>();
+}
 
 // Hash of an element's sorted vertex ids, to find duplicate elements in linear time.
 struct VertexIdsHash {

@@ -86,16 +86,16 @@ std::vector<bool> CheckFaces(const TriMesh& mesh, double diagonal, const Context
       }
       continue;
     }
-    const Eigen::Vector3d pa = mesh.vertices.row(a), pb = mesh.vertices.row(b),
-                          pc = mesh.vertices.row(c);
-    const double twice_area = (pb - pa).cross(pc - pa).norm();
-    const double longest =
+    const WideVector pa = WidePoint(mesh.vertices, a), pb = WidePoint(mesh.vertices, b),
+                     pc = WidePoint(mesh.vertices, c);
+    const long double twice_area = (pb - pa).cross(pc - pa).norm();
+    const long double longest =
         std::max({(pb - pa).squaredNorm(), (pc - pb).squaredNorm(), (pa - pc).squaredNorm()});
     if (twice_area <= kDegenerateShape * longest ||
-        twice_area <= kDegenerateArea * diagonal * diagonal) {
+        twice_area <= kDegenerateArea * static_cast<long double>(diagonal) * diagonal) {
       if (degenerate.WantsExample()) {
         char area[32];
-        std::snprintf(area, sizeof area, "%.3g", twice_area / 2);
+        std::snprintf(area, sizeof area, "%.3Lg", twice_area / 2);
         degenerate.Add(context.Element("triangle", f) + " has area " + area + " m² (corners " +
                        std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c) +
                        ")");
@@ -259,22 +259,22 @@ void CheckEdges(const TriMesh& mesh, const std::vector<bool>& valid, const Conte
 
   // Closed, consistently oriented pieces must enclose positive volume (outward normals).
   if (boundary.count() > 0 || non_manifold.count() > 0 || !orientable) return;
-  std::vector<double> volume(static_cast<size_t>(faces), 0.0);
+  std::vector<long double> volume(static_cast<size_t>(faces), 0.0);
   std::vector<int> size(static_cast<size_t>(faces), 0);
   for (int f = 0; f < faces; ++f) {
     if (!valid[static_cast<size_t>(f)]) continue;
-    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0));
-    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1));
-    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2));
+    const WideVector a = WidePoint(mesh.vertices, mesh.triangles(f, 0));
+    const WideVector b = WidePoint(mesh.vertices, mesh.triangles(f, 1));
+    const WideVector c = WidePoint(mesh.vertices, mesh.triangles(f, 2));
     const int root = patches.Find(f);
-    volume[static_cast<size_t>(root)] += a.dot(b.cross(c)) / 6.0;
+    volume[static_cast<size_t>(root)] += a.dot(b.cross(c)) / 6;
     ++size[static_cast<size_t>(root)];
   }
   Tally inward(Severity::kProblem, "inward-orientation", examples);
   for (int f = 0; f < faces; ++f) {
     if (size[static_cast<size_t>(f)] == 0 || volume[static_cast<size_t>(f)] >= 0) continue;
     char text[48];
-    std::snprintf(text, sizeof text, "%.3g m³", volume[static_cast<size_t>(f)]);
+    std::snprintf(text, sizeof text, "%.3Lg m³", volume[static_cast<size_t>(f)]);
     inward.Add("the closed piece containing " + context.Element("triangle", f) + " (" +
                std::to_string(size[static_cast<size_t>(f)]) + " triangles) encloses " + text);
   }

@@ -49,18 +49,19 @@ void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* r
       }
       continue;
     }
-    const Eigen::Vector3d p0 = mesh.vertices.row(mesh.tets(t, 0));
-    const Eigen::Vector3d e1 = Eigen::Vector3d(mesh.vertices.row(mesh.tets(t, 1))) - p0;
-    const Eigen::Vector3d e2 = Eigen::Vector3d(mesh.vertices.row(mesh.tets(t, 2))) - p0;
-    const Eigen::Vector3d e3 = Eigen::Vector3d(mesh.vertices.row(mesh.tets(t, 3))) - p0;
-    const double six_volume = e1.dot(e2.cross(e3));
-    const double longest = std::sqrt(
+    const WideVector p0 = WidePoint(mesh.vertices, mesh.tets(t, 0));
+    const WideVector e1 = WidePoint(mesh.vertices, mesh.tets(t, 1)) - p0;
+    const WideVector e2 = WidePoint(mesh.vertices, mesh.tets(t, 2)) - p0;
+    const WideVector e3 = WidePoint(mesh.vertices, mesh.tets(t, 3)) - p0;
+    const long double six_volume = e1.dot(e2.cross(e3));
+    const long double longest = std::sqrt(
         std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm(), (e2 - e1).squaredNorm(),
                   (e3 - e1).squaredNorm(), (e3 - e2).squaredNorm()}));
+    const long double size = diagonal;
     char volume[32];
-    std::snprintf(volume, sizeof volume, "%.3g", six_volume / 6);
+    std::snprintf(volume, sizeof volume, "%.3Lg", six_volume / 6);
     if (std::fabs(six_volume) <= kDegenerateShape * longest * longest * longest ||
-        std::fabs(six_volume) <= kDegenerateVolume * diagonal * diagonal * diagonal) {
+        std::fabs(six_volume) <= kDegenerateVolume * size * size * size) {
       if (flat.WantsExample()) {
         flat.Add(context.Element("tetrahedron", t) + " " + Corners(mesh, t) + " has volume " +
                  volume + " m³");
