@@ -32,6 +32,9 @@ struct OutOfBudget {};
 // the box comparisons that estimate may cost at most.
 constexpr int kSampledTriangles = 64;
 constexpr double kMaxSampleWork = 1e8;
+// Below this many boxes the sweep compares them all instead of splitting further (the value
+// CGAL's own self_intersections() uses; the default, 10, splits far deeper).
+constexpr std::ptrdiff_t kBoxCutoff = 2000;
 // Pairs tested between two looks at the clock.
 constexpr int64_t kTestsPerClockCheck = 4096;
 
@@ -185,7 +188,7 @@ SelfIntersections FindSelfIntersections(const TriMesh& mesh,
     };
     try {
       CGAL::box_self_intersection_d<CGAL::Sequential_tag>(box_pointers.begin(), box_pointers.end(),
-                                                          test);
+                                                          test, kBoxCutoff);
     } catch (const EnoughPairs&) {
       result.stopped_at_limit = true;
     } catch (const OutOfBudget&) {

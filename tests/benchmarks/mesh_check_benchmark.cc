@@ -2,7 +2,8 @@
 //   - 300k copies of one triangle (OBJ, 2.4 MB) and 300k copies of one tet (TetGen pair);
 //   - 60k parallel triangles whose bounding boxes all overlap (binary STL, 3 MB);
 //   - a closed double cone of 60k sliver triangles (binary STL, checked with --closed, and
-//     read + validated as a support, as ergo_simulate does).
+//     read + validated as a support, as ergo_simulate does);
+//   - for scale, a well-shaped closed icosphere of 327,680 triangles.
 // Each runs once (they are seconds long); the label is the verdict. Run: mesh_check_benchmark
 #include <filesystem>
 #include <string>
@@ -13,6 +14,7 @@
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/primitives.h"
 #include "tests/support/crafted_meshes.h"
 #include "tests/support/test_paths.h"
 
@@ -69,6 +71,13 @@ void BM_CheckClosedSliverCone(benchmark::State& state) {
   TimeCheck(state, path, true);
 }
 
+// For scale: a well-shaped closed surface, whose test finishes well inside its budget.
+void BM_CheckClosedIcosphere(benchmark::State& state) {
+  const std::string path =
+      WriteStl("icosphere.stl", MakeIcosphere(0.1, static_cast<int>(state.range(0))));
+  TimeCheck(state, path, true);
+}
+
 void BM_ValidateSliverConeAsSupport(benchmark::State& state) {
   const std::string path = WriteStl(
       "sliver_cone_support.stl", testing::SliverDoubleCone(static_cast<int>(state.range(0)) / 2));
@@ -88,6 +97,7 @@ BENCHMARK(BM_CheckDuplicateTriangles)->Arg(300000)->Iterations(1)->Unit(benchmar
 BENCHMARK(BM_CheckDuplicateTets)->Arg(300000)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_CheckParallelTriangles)->Arg(60000)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_CheckClosedSliverCone)->Arg(60000)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_CheckClosedIcosphere)->Arg(7)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_ValidateSliverConeAsSupport)->Arg(60000)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
