@@ -28,7 +28,8 @@ std::string EdgeName(int a, int b) {
 
 }  // namespace
 
-void ValidateSupportMesh(const TriMesh& mesh, const std::string& source) {
+void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
+                         const SelfIntersectionOptions& self_intersection) {
   const Eigen::Index num_vertices = mesh.vertices.rows();
   const Eigen::Index num_triangles = mesh.triangles.rows();
   if (num_triangles < 4) {
@@ -157,7 +158,9 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source) {
 
   // Self-intersections (the mesh foundation's exact CGAL check): a surface crossing itself
   // encloses no well-defined volume, and the inside test would contradict itself there.
-  const SelfIntersections crossings = FindSelfIntersections(mesh, 3);
+  SelfIntersectionOptions budget = self_intersection;
+  budget.max_pairs = 3;
+  const SelfIntersections crossings = FindSelfIntersections(mesh, budget);
   if (crossings.checked && !crossings.pairs.empty()) {
     std::ostringstream what;
     what << "self-intersecting support: triangles " << crossings.pairs[0].first << " and "
@@ -173,6 +176,18 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source) {
                      what.str(),
                      "remove the overlap (e.g. union the parts with a mesh boolean) so the "
                      "surface bounds a single volume");
+  }
+  if (crossings.out_of_budget) {
+    // Refused rather than used unverified: a crossing support gives wrong pressures without
+    // any sign, and triangles whose boxes overlap this much would make every contact query
+    // visit most of them as well.
+    throw InputError(source, "",
+                     crossings.BudgetReport() +
+                         "; a support must be verified free of them (a surface crossing "
+                         "itself gives wrong pressures), and contact queries would visit most "
+                         "of these triangles too",
+                     "re-mesh the support with well-shaped triangles (e.g. MeshLab "
+                     "'Remeshing: Isotropic Explicit Remeshing' or CGAL's isotropic_remeshing)");
   }
   if (!crossings.checked) {
     LOG(WARNING) << source << ": self-intersection check skipped: " << crossings.skipped_because;

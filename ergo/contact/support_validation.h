@@ -1,11 +1,13 @@
 // The checks a support surface S must pass before contact can use it (paper §3.5: a vertex
 // collides with "the volume enclosed by the supporting surface", so S must enclose one):
 // closed, edge- and vertex-manifold, consistently and outward oriented, no degenerate
-// triangles, finite coordinates, no self-intersection (ergo/mesh/self_intersection.h).
+// triangles, finite coordinates, no self-intersection (ergo/mesh/self_intersection.h, with
+// its default work budget: a support whose test runs out of it is refused, not trusted).
 #pragma once
 
 #include <string>
 
+#include "ergo/mesh/self_intersection.h"
 #include "ergo/mesh/tri_mesh.h"
 
 namespace ergo {
@@ -16,6 +18,8 @@ inline constexpr double kDegenerateTriangleRatio = 1e-12;
 
 // Throws InputError naming `source` (a file or a description), the offending triangle /
 // edge / vertex, what is wrong and the fix. Returns normally if `mesh` can be a support.
-void ValidateSupportMesh(const TriMesh& mesh, const std::string& source);
+// `self_intersection` is the budget of the self-intersection test (its max_pairs is ignored).
+void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
+                         const SelfIntersectionOptions& self_intersection = {});
 
 }  // namespace ergo

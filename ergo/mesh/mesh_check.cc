@@ -1,7 +1,9 @@
 #include "ergo/mesh/mesh_check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <new>
 #include <numeric>
@@ -22,9 +24,9 @@ constexpr double kLargestBodyPart = 3.0;
 // A mesh spanning less than this is too small for a body part or support (metres).
 constexpr double kSmallestBodyPart = 0.01;
 
-std::string Metres(double value) {
+std::string Metres(long double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g m", value);
+  std::snprintf(text, sizeof text, "%.3Lg m", value);
   return text;
 }
 
@@ -36,20 +38,29 @@ std::string FormatPoint(const Eigen::Vector3d& p) {
   return text;
 }
 
-std::string Context::Vertex(int64_t v) const {
-  std::string name = "vertex " + std::to_string(v);
-  if (details && v >= 0 && v < static_cast<int64_t>(details->vertex_lines.size())) {
-    name += " (line " + std::to_string(details->vertex_lines[static_cast<size_t>(v)]) + ")";
+namespace {
+
+// " (line 40)", or " (line 40 of body.node)" when the line is in another file than `source`.
+std::string LineOf(const std::vector<int>& lines, int64_t index, const std::string& file,
+                   const std::string& source) {
+  if (index < 0 || index >= static_cast<int64_t>(lines.size())) return "";
+  std::string text = " (line " + std::to_string(lines[static_cast<size_t>(index)]);
+  if (!file.empty() && file != source) {
+    text += " of " + std::filesystem::path(file).filename().string();
   }
-  return name;
+  return text + ")";
+}
+
+}  // namespace
+
+std::string Context::Vertex(int64_t v) const {
+  const std::string name = "vertex " + std::to_string(v);
+  return details ? name + LineOf(details->vertex_lines, v, details->vertex_file, source) : name;
 }
 
 std::string Context::Element(const char* kind, int64_t e) const {
-  std::string name = std::string(kind) + " " + std::to_string(e);
-  if (details && e >= 0 && e < static_cast<int64_t>(details->element_lines.size())) {
-    name += " (line " + std::to_string(details->element_lines[static_cast<size_t>(e)]) + ")";
-  }
-  return name;
+  const std::string name = std::string(kind) + " " + std::to_string(e);
+  return details ? name + LineOf(details->element_lines, e, details->element_file, source) : name;
 }
 
 void Tally::Report(const std::string& what, const std::string& fix, MeshCheckReport* report) const {
@@ -114,8 +125,8 @@ std::vector<int> CheckCoincidentVertices(const Vertices& vertices, const std::ve
 void CheckVertexUse(const Vertices& vertices, const std::vector<bool>& used, const Context& context,
                     MeshCheckReport* report) {
   Tally unused(Severity::kNote, "unreferenced-vertices", context.options.max_examples);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
+  WideVector lo = WideVector::Constant(std::numeric_limits<long double>::infinity());
+  WideVector hi = -lo;
   for (Eigen::Index v = 0; v < vertices.rows(); ++v) {
     if (!used[static_cast<size_t>(v)]) {
       if (unused.WantsExample()) {
@@ -125,15 +136,15 @@ void CheckVertexUse(const Vertices& vertices, const std::vector<bool>& used, con
       }
       continue;
     }
-    lo = lo.cwiseMin(vertices.row(v).transpose());
-    hi = hi.cwiseMax(vertices.row(v).transpose());
+    lo = lo.cwiseMin(WidePoint(vertices, v));
+    hi = hi.cwiseMax(WidePoint(vertices, v));
   }
   const char* elements = report->is_tet ? "tetrahedron" : "triangle";
   unused.Report(Counted(unused.count(), "vertex is", "vertices are") + " used by no " + elements,
                 "none needed; remove them to save memory", report);
   if (!(lo.array() <= hi.array()).all()) return;
-  const double diagonal = (hi - lo).norm();
-  report->bounding_box_diagonal = diagonal;
+  const long double diagonal = (hi - lo).norm();
+  report->bounding_box_diagonal = static_cast<double>(diagonal);  // infinite above 1.8e308 m
   const bool in_mm = context.options.unit == LengthUnit::kMillimetre;
   MeshIssue issue;
   issue.severity = Severity::kProblem;
@@ -256,7 +267,9 @@ std::string MeshCheckReport::BriefReport() const {
   if (worst == Severity::kUnusable) {
     for (const MeshIssue& issue : issues) {
       if (issue.severity != Severity::kUnusable) continue;
-      out << "unusable: " << (issue.location.empty() ? "" : issue.location + ": ") << issue.what;
+      std::string where = issue.file;
+      if (!issue.location.empty()) where += (where.empty() ? "" : ":") + issue.location;
+      out << "unusable: " << (where.empty() ? "" : where + ": ") << issue.what;
       break;
     }
     return out.str();
@@ -288,7 +301,12 @@ std::string MeshCheckReport::FullReport() const {
         << (is_tet ? "tetrahedral mesh, " : "triangle surface, ") << vertices << " vertices, "
         << (is_tet ? tets : triangles) << (is_tet ? " tetrahedra" : " triangles");
     char size[48];
-    std::snprintf(size, sizeof size, ", %.4g m across", bounding_box_diagonal);
+    if (std::isinf(bounding_box_diagonal)) {
+      std::snprintf(size, sizeof size, ", more than %.4g m across",
+                    std::numeric_limits<double>::max());
+    } else {
+      std::snprintf(size, sizeof size, ", %.4g m across", bounding_box_diagonal);
+    }
     out << size << " (elements and vertices are numbered from 0)\n";
   }
   std::vector<const MeshIssue*> sorted;
@@ -297,7 +315,8 @@ std::string MeshCheckReport::FullReport() const {
     return a->severity > b->severity;
   });
   for (const MeshIssue* issue : sorted) {
-    out << file << (issue->location.empty() ? "" : ":" + issue->location) << ": "
+    out << (issue->file.empty() ? file : issue->file)
+        << (issue->location.empty() ? "" : ":" + issue->location) << ": "
         << SeverityName(issue->severity) << ": " << issue->what << " [" << issue->code << "]\n";
     for (const std::string& example : issue->examples)
       out << "  " << file << ": " << example << '\n';
@@ -361,6 +380,7 @@ MeshCheckReport CheckMeshFile(const std::string& path, const MeshCheckOptions& o
     MeshCheckReport report;
     report.file = path;
     report.issues.push_back(Unusable(error.location(), error.problem(), error.fix()));
+    if (error.source() != path) report.issues.back().file = error.source();
     return report;
   } catch (const std::bad_alloc&) {
     MeshCheckReport report;

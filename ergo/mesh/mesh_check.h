@@ -8,7 +8,9 @@
 // (CGAL), unreferenced vertices. Tetrahedral meshes: inverted and zero-volume tets, repeated
 // vertex in a tet, duplicate tets, faces shared by more than two tets, unreferenced and
 // coincident vertices. Both: a size that suggests the wrong unit (bounding-box diagonal above
-// 3 m or below 1 cm). Every check is O(n log n).
+// 3 m or below 1 cm). Every check is O(n log n) (duplicates by hashing) except the
+// self-intersection test, which has a work budget (self_intersection.h) and reports a
+// problem when it runs out rather than running for minutes.
 //
 //   MeshCheckOptions options;
 //   options.require_closed = true;
@@ -23,6 +25,7 @@
 
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/self_intersection.h"
 #include "ergo/mesh/tri_mesh.h"
 
 namespace ergo {
@@ -38,6 +41,8 @@ struct MeshIssue {
   Severity severity = Severity::kNote;
   std::string code;                   // stable short name, e.g. "non-manifold-edge"
   std::string location;               // where, for findings about one place ("line 12"); often ""
+  std::string file;                   // the file `location` is in, if not the checked one
+                                      // (the other file of a TetGen pair); usually ""
   std::string what;                   // e.g. "12 edges are shared by more than two triangles"
   std::string fix;                    // what to do about it; "" for plain notes
   int64_t count = 0;                  // elements concerned (0 for whole-file findings)
@@ -48,6 +53,8 @@ struct MeshCheckOptions {
   LengthUnit unit = LengthUnit::kMetre;  // unit of the file's coordinates
   bool require_closed = false;           // open boundary edges are problems, not notes
   bool check_self_intersections = true;
+  // Its work budget; a test that runs out is a problem ("self-intersection-test-incomplete").
+  SelfIntersectionOptions self_intersection;
   int max_examples = 5;  // examples listed per kind of finding
 };
 

@@ -4,7 +4,10 @@
 // mesh_check_surface.cc, tetrahedron checks in mesh_check_volume.cc.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -62,6 +65,30 @@ void CheckSurface(const TriMesh& mesh, const std::vector<int>& weld, const Conte
 
 // Tetrahedron checks.
 void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* report);
+
+// Lengths, areas and volumes of the checks are computed in long double, whose exponent range
+// (to 1e4932 on x86-64 and aarch64) holds the squares and cubes of any finite double: a mesh
+// with coordinates of 1e300 gets its true size and shapes instead of infinities.
+using WideVector = Eigen::Matrix<long double, 3, 1>;
+static_assert(std::numeric_limits<long double>::max_exponent10 >
+                  3 * std::numeric_limits<double>::max_exponent10,
+              "the mesh check needs a long double that holds the cube of any double");
+inline WideVector WidePoint(const Vertices& vertices, Eigen::Index v) {
+  return vertices.row(v).transpose().cast<long double>();
+}
+
+// Hash of an element's sorted vertex ids, to find duplicate elements in linear time.
+struct VertexIdsHash {
+  template <size_t N>
+  size_t operator()(const std::array<int, N>& ids) const {
+    uint64_t hash = 0x9E3779B97F4A7C15u;
+    for (const int id : ids) {
+      hash = (hash ^ static_cast<uint32_t>(id)) * 0xFF51AFD7ED558CCDu;
+      hash ^= hash >> 32;
+    }
+    return static_cast<size_t>(hash);
+  }
+};
 
 // "(0.1, -0.25, 3)" in metres.
 std::string FormatPoint(const Eigen::Vector3d& p);

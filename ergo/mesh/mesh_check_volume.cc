@@ -1,12 +1,13 @@
 // Tetrahedral-mesh steps of the mesh check (see mesh_check_steps.h): tets with a repeated
 // vertex, zero-volume and inverted tets (negative orientation, the convention of
-// tri_mesh.h), duplicate tets, and faces shared by more than two tets. Sorting only,
+// tri_mesh.h), duplicate tets (hashing), and faces shared by more than two tets (sorting),
 // O(n log n).
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <unordered_map>
 
 #include <Eigen/Geometry>
 
@@ -48,18 +49,19 @@ void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* r
       }
       continue;
     }
-    const Eigen::Vector3d p0 = mesh.vertices.row(mesh.tets(t, 0));
-    const Eigen::Vector3d e1 = Eigen::Vector3d(mesh.vertices.row(mesh.tets(t, 1))) - p0;
-    const Eigen::Vector3d e2 = Eigen::Vector3d(mesh.vertices.row(mesh.tets(t, 2))) - p0;
-    const Eigen::Vector3d e3 = Eigen::Vector3d(mesh.vertices.row(mesh.tets(t, 3))) - p0;
-    const double six_volume = e1.dot(e2.cross(e3));
-    const double longest = std::sqrt(
+    const WideVector p0 = WidePoint(mesh.vertices, mesh.tets(t, 0));
+    const WideVector e1 = WidePoint(mesh.vertices, mesh.tets(t, 1)) - p0;
+    const WideVector e2 = WidePoint(mesh.vertices, mesh.tets(t, 2)) - p0;
+    const WideVector e3 = WidePoint(mesh.vertices, mesh.tets(t, 3)) - p0;
+    const long double six_volume = e1.dot(e2.cross(e3));
+    const long double longest = std::sqrt(
         std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm(), (e2 - e1).squaredNorm(),
                   (e3 - e1).squaredNorm(), (e3 - e2).squaredNorm()}));
+    const long double size = diagonal;
     char volume[32];
-    std::snprintf(volume, sizeof volume, "%.3g", six_volume / 6);
+    std::snprintf(volume, sizeof volume, "%.3Lg", six_volume / 6);
     if (std::fabs(six_volume) <= kDegenerateShape * longest * longest * longest ||
-        std::fabs(six_volume) <= kDegenerateVolume * diagonal * diagonal * diagonal) {
+        std::fabs(six_volume) <= kDegenerateVolume * size * size * size) {
       if (flat.WantsExample()) {
         flat.Add(context.Element("tetrahedron", t) + " " + Corners(mesh, t) + " has volume " +
                  volume + " m³");
@@ -98,36 +100,31 @@ void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* r
                     report);
   }
 
-  // Duplicate tets and faces shared by more than two tets, by sorting vertex keys.
-  std::vector<std::pair<std::array<int, 4>, int>> keys;
+  // Duplicate tets by hashing their sorted vertex ids (each copy against the first), then
+  // faces shared by more than two of the remaining tets by sorting.
+  std::unordered_map<std::array<int, 4>, int, VertexIdsHash> first_with;
   std::vector<std::pair<std::array<int, 3>, int>> faces;
-  keys.reserve(static_cast<size_t>(tets));
+  first_with.reserve(static_cast<size_t>(tets));
   faces.reserve(4 * static_cast<size_t>(tets));
+  Tally duplicate(Severity::kProblem, "duplicate-tets", examples);
   for (int t = 0; t < tets; ++t) {
     if (!valid[static_cast<size_t>(t)]) continue;
     std::array<int, 4> v = {mesh.tets(t, 0), mesh.tets(t, 1), mesh.tets(t, 2), mesh.tets(t, 3)};
     std::sort(v.begin(), v.end());
-    keys.emplace_back(v, t);
-  }
-  std::sort(keys.begin(), keys.end());
-  Tally duplicate(Severity::kProblem, "duplicate-tets", examples);
-  for (size_t i = 0; i < keys.size(); ++i) {
-    if (i > 0 && keys[i].first == keys[i - 1].first) {
-      size_t first = i - 1;
-      while (first > 0 && keys[first - 1].first == keys[i].first) --first;
+    const auto [first, inserted] = first_with.emplace(v, t);
+    if (!inserted) {
       if (duplicate.WantsExample()) {
-        duplicate.Add(context.Element("tetrahedron", keys[i].second) + " repeats " +
-                      context.Element("tetrahedron", keys[first].second));
+        duplicate.Add(context.Element("tetrahedron", t) + " repeats " +
+                      context.Element("tetrahedron", first->second));
       } else {
         duplicate.Count();
       }
       continue;  // copies are left out of the face check
     }
-    const std::array<int, 4>& v = keys[i].first;
-    faces.push_back({{v[1], v[2], v[3]}, keys[i].second});
-    faces.push_back({{v[0], v[2], v[3]}, keys[i].second});
-    faces.push_back({{v[0], v[1], v[3]}, keys[i].second});
-    faces.push_back({{v[0], v[1], v[2]}, keys[i].second});
+    faces.push_back({{v[1], v[2], v[3]}, t});
+    faces.push_back({{v[0], v[2], v[3]}, t});
+    faces.push_back({{v[0], v[1], v[3]}, t});
+    faces.push_back({{v[0], v[1], v[2]}, t});
   }
   duplicate.Report(Counted(duplicate.count(), "tetrahedron repeats", "tetrahedra repeat") +
                        " an earlier tetrahedron (same four vertices)",

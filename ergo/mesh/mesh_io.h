@@ -33,6 +33,8 @@ struct ReadDetails {
   std::string format;              // e.g. "OFF", "PLY binary little-endian", "gmsh 4.1 ASCII"
   std::vector<int> vertex_lines;   // 1-based source line of each vertex; empty for binary files
   std::vector<int> element_lines;  // source line of each triangle / tet; empty for binary files
+  // For a TetGen pair, the files those lines are in (the .node and the .ele); "" otherwise.
+  std::string vertex_file, element_file;
 };
 
 // Reads a triangle mesh (.obj .off .ply .stl .msh); polygons are fan-triangulated.

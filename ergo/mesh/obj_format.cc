@@ -62,7 +62,6 @@ TriMesh ReadObj(const std::string& path, const ReadOptions& options, ReadDetails
   TextReader reader(path, text);
   SurfaceBuilder builder;
   std::vector<ForwardReference> forward;
-  std::vector<std::string_view> tokens;
   std::vector<int> corners;
   std::string joined;  // a record continued over lines ending in '\'
   int64_t lines_and_points = 0;
@@ -80,35 +79,41 @@ TriMesh ReadObj(const std::string& path, const ReadOptions& options, ReadDetails
       }
       line = joined;
     }
-    SplitTokens(line, '#', &tokens);
-    if (tokens.empty()) continue;
-    const std::string_view keyword = tokens[0];
-    if (keyword == "v") {
-      const int64_t vertex = builder.vertex_count();
-      if (tokens.size() < 4) {
-        reader.Fail("vertex " + std::to_string(vertex + 1) + " has " +
-                        std::to_string(tokens.size() - 1) + " coordinates instead of 3",
-                    "write vertices as 'v x y z'");
+    LineTokens tokens(line, '#');
+    std::string_view keyword;
+    if (!tokens.Next(&keyword)) continue;
+    if (keyword == "f") {
+      // Faces are polygons of any size: read token by token, at any line length.
+      corners.clear();
+      std::string_view corner;
+      while (tokens.Next(&corner)) {
+        corners.push_back(
+            static_cast<int>(CornerIndex(reader, corner, builder.vertex_count(), &forward)));
       }
-      // Messages use OBJ's 1-based vertex numbers.
-      const double x = ParseCoordinate(reader, tokens[1], vertex + 1);
-      const double y = ParseCoordinate(reader, tokens[2], vertex + 1);
-      const double z = ParseCoordinate(reader, tokens[3], vertex + 1);
-      builder.AddVertex(x, y, z, record_line);
-    } else if (keyword == "f") {
-      if (tokens.size() < 2) {
+      if (corners.empty()) {
         reader.Fail("face record has no vertex indices",
                     "remove the empty 'f' line or list the face's vertices");
-      }
-      corners.clear();
-      for (size_t k = 1; k < tokens.size(); ++k) {
-        corners.push_back(
-            static_cast<int>(CornerIndex(reader, tokens[k], builder.vertex_count(), &forward)));
       }
       builder.AddPolygon(corners.data(), static_cast<int>(corners.size()), record_line,
                          "line " + std::to_string(record_line));
     } else if (keyword == "l" || keyword == "p") {
       ++lines_and_points;
+    } else if (keyword == "v") {
+      reader.RequireRecordLength(line);
+      const int64_t vertex = builder.vertex_count();
+      std::string_view xyz[3];
+      int found = 0;
+      while (found < 3 && tokens.Next(&xyz[found])) ++found;
+      if (found < 3) {
+        reader.Fail("vertex " + std::to_string(vertex + 1) + " has " + std::to_string(found) +
+                        " coordinates instead of 3",
+                    "write vertices as 'v x y z'");
+      }
+      // Messages use OBJ's 1-based vertex numbers.
+      const double x = ParseCoordinate(reader, xyz[0], vertex + 1);
+      const double y = ParseCoordinate(reader, xyz[1], vertex + 1);
+      const double z = ParseCoordinate(reader, xyz[2], vertex + 1);
+      builder.AddVertex(x, y, z, record_line);
     }
   }
   for (const ForwardReference& reference : forward) {

@@ -125,8 +125,9 @@ TriMesh ReadOff(const std::string& path, const ReadOptions& options, ReadDetails
       reader.Fail(face + " has " + std::to_string(n) + " vertices",
                   "every face record is 'n i1 ... in' with n >= 3");
     }
+    // n indices take at least 2n - 1 bytes: one digit each, a separator between them.
     RequireCountFits(path, reader.Location(), "vertices in " + face, n, 2,
-                     reader.remaining_bytes() + 2 * kMaxLineBytes);
+                     stream.remaining_bytes() + 1);
     corners.clear();
     for (int64_t k = 0; k < n; ++k) {
       if (!stream.Next(&token)) {

@@ -101,6 +101,7 @@ PlyHeader ReadHeader(TextReader& reader) {
   std::string_view line;
   try {
     if (!reader.NextLine(&line)) reader.Fail("the file is empty", fix);
+    reader.RequireRecordLength(line);
     if (line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
     SplitTokens(line, '\0', &tokens);
     if (tokens.size() != 1 || tokens[0] != "ply") {
@@ -111,6 +112,7 @@ PlyHeader ReadHeader(TextReader& reader) {
       if (!reader.NextLine(&line)) {
         reader.Fail("the header has no 'end_header' line", fix);
       }
+      reader.RequireRecordLength(line);
       SplitTokens(line, '\0', &tokens);
       if (tokens.empty()) continue;
       const std::string_view keyword = tokens[0];
@@ -180,21 +182,26 @@ class AsciiRecords {
  public:
   explicit AsciiRecords(TextReader* reader) : reader_(reader) {}
   void Begin(const PlyElement& element, int64_t record) {
-    if (!reader_->NextTokens('\0', &tokens_)) {
-      reader_->Fail("the file ends at record " + std::to_string(record) + " of the " +
-                        std::to_string(element.count) + " '" + element.name +
-                        "' records the header declares",
-                    "the file is truncated or the header's count is wrong: re-export it");
-    }
-    next_ = 0;
+    std::string_view line;
+    do {
+      if (!reader_->NextLine(&line)) {
+        reader_->Fail("the file ends at record " + std::to_string(record) + " of the " +
+                          std::to_string(element.count) + " '" + element.name +
+                          "' records the header declares",
+                      "the file is truncated or the header's count is wrong: re-export it");
+      }
+      tokens_ = LineTokens(line, '\0');
+    } while (tokens_.AtEnd());
+    values_ = 0;
   }
   double Value(PlyType type, const PlyElement& element, int64_t record) {
-    if (next_ >= tokens_.size()) {
+    std::string_view token;
+    if (!tokens_.Next(&token)) {
       reader_->Fail("'" + element.name + "' record " + std::to_string(record) + " has only " +
-                        std::to_string(tokens_.size()) + " values, fewer than the header declares",
+                        std::to_string(values_) + " values, fewer than the header declares",
                     "the file does not match its header: re-export it");
     }
-    const std::string_view token = tokens_[next_++];
+    ++values_;
     double value = 0;
     if (!ParseDouble(token, &value)) {
       reader_->Fail("value " + Quote(token) + " of '" + element.name + "' record " +
@@ -204,15 +211,16 @@ class AsciiRecords {
     return value;
   }
   // True when the record had more values than the header declares.
-  bool End() const { return next_ < tokens_.size(); }
+  bool End() const { return !tokens_.AtEnd(); }
   std::string Location(const PlyElement&, int64_t) const { return reader_->Location(); }
   int line() const { return reader_->line_number(); }
-  uint64_t remaining() const { return reader_->remaining_bytes(); }
+  // Bytes after the last value read (one line per record: a face's list may be long).
+  uint64_t remaining() const { return tokens_.remaining_bytes() + reader_->remaining_bytes(); }
 
  private:
   TextReader* reader_;
-  std::vector<std::string_view> tokens_;
-  size_t next_ = 0;
+  LineTokens tokens_;
+  int64_t values_ = 0;
 };
 
 // Record access for binary data in either byte order.
@@ -340,7 +348,7 @@ void ReadData(const std::string& path, const PlyHeader& header, int64_t vertex_c
         }
         const double count = records.Value(property.count_type, element, record);
         if (!(count >= 0) || count != std::floor(count) ||
-            count > static_cast<double>(records.remaining()) + kMaxLineBytes) {
+            count > static_cast<double>(records.remaining())) {
           throw InputError(path, records.Location(element, record),
                            "list '" + property.name + "' of '" + element.name + "' record " +
                                std::to_string(record) + " has an entry count of " +

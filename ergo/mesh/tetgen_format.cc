@@ -95,6 +95,7 @@ TetMesh ReadTetGen(const std::string& path, const ReadOptions& options, ReadDeta
   const int64_t first = ReadNodes(node_path, &xyz, &vertex_lines);
   const int64_t vertex_count = static_cast<int64_t>(xyz.size() / 3);
 
+  const std::string node_name = std::filesystem::path(node_path).filename().string();
   const std::string text = BytesToText(ReadFileBytes(ele_path));
   TextReader reader(ele_path, text);
   const std::vector<int64_t> header =
@@ -121,11 +122,16 @@ TetMesh ReadTetGen(const std::string& path, const ReadOptions& options, ReadDeta
                       " node numbers, found " + std::to_string(tokens.size()) + " values",
                   "the file is damaged: re-export it");
     }
-    const std::string element = "tetrahedron " + std::string(tokens[0]);
     for (int k = 1; k <= 4; ++k) {
       const int64_t number = ParseInteger(reader, tokens[k], "node number");
-      RequireVertexIndex(ele_path, reader.Location(), element, number - first, number,
-                         vertex_count);
+      if (number - first < 0 || number - first >= vertex_count) {
+        // The tetrahedron's own number as written (quoted and cut when it is no short word).
+        const std::string name = tokens[0].size() <= 20 ? std::string(tokens[0]) : Quote(tokens[0]);
+        reader.Fail("tetrahedron " + name + " refers to node " + std::to_string(number) + ", but " +
+                        node_name + " has " + std::to_string(vertex_count) +
+                        " nodes, numbered from " + std::to_string(first),
+                    "re-export the mesh; every tetrahedron must name nodes of its .node file");
+      }
       tets.push_back(static_cast<int>(number - first));
     }
     tet_lines.push_back(reader.line_number());
@@ -142,6 +148,8 @@ TetMesh ReadTetGen(const std::string& path, const ReadOptions& options, ReadDeta
     details->format = "TetGen .node/.ele (" + std::to_string(first) + "-based)";
     details->vertex_lines = std::move(vertex_lines);
     details->element_lines = std::move(tet_lines);
+    details->vertex_file = node_path;
+    details->element_file = ele_path;
     if (per_tet == 10) {
       AddNote(details, false, "",
               "10-node tetrahedra: only their corner nodes are used (ergo's elements are "

@@ -1,23 +1,51 @@
 #include "ergo/mesh/text_reader.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <system_error>
+#include <cstring>
 
 #include "ergo/mesh/input_error.h"
 
 namespace ergo {
 
-namespace fs = std::filesystem;
-
 namespace {
 
 constexpr uintmax_t kMaxFileBytes = uintmax_t{1} << 31;
+
+// Closes a POSIX file descriptor when it goes out of scope.
+struct FileCloser {
+  int descriptor;
+  ~FileCloser() { ::close(descriptor); }
+};
+
+// Throws unless `status` is that of a regular file, saying what the path is instead.
+void RequireRegularFile(const std::string& path, const struct stat& status) {
+  if (S_ISREG(status.st_mode)) return;
+  if (S_ISDIR(status.st_mode)) {
+    throw InputError(path, "", "this is a directory, not a mesh file", "pass a mesh file");
+  }
+  const bool stream = S_ISFIFO(status.st_mode) || S_ISSOCK(status.st_mode);
+  const char* kind = S_ISFIFO(status.st_mode)   ? "a named pipe (FIFO)"
+                     : S_ISSOCK(status.st_mode) ? "a socket"
+                     : S_ISCHR(status.st_mode)  ? "a character device"
+                     : S_ISBLK(status.st_mode)  ? "a block device"
+                                                : "a special file";
+  throw InputError(path, "",
+                   std::string("this is ") + kind +
+                       ", not a regular file: ergo reads a mesh file whole, so it must be a "
+                       "file of known end",
+                   stream ? "save what it delivers to a regular file first (e.g. cat " + path +
+                                " > mesh.stl, with the mesh's extension) and pass that file"
+                          : std::string("pass a regular mesh file"));
+}
 
 bool IsSpace(char c) {
   return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r' || c == '\n';
@@ -26,32 +54,48 @@ bool IsSpace(char c) {
 }  // namespace
 
 std::string ReadFileBytes(const std::string& path) {
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (error || !fs::exists(status)) {
+  // Checked before opening, and again on the open descriptor (the path may change in
+  // between): a FIFO would block the reader forever and a device would never end.
+  struct stat status;
+  if (::stat(path.c_str(), &status) != 0) {
     throw InputError(path, "", "the file does not exist or cannot be accessed",
                      "check the path and its permissions");
   }
-  if (fs::is_directory(status)) {
-    throw InputError(path, "", "this is a directory, not a mesh file", "pass a mesh file");
+  RequireRegularFile(path, status);
+  const int descriptor = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (descriptor < 0) {
+    throw InputError(
+        path, "",
+        std::string("the file cannot be opened for reading (") + std::strerror(errno) + ")",
+        "check its permissions");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(path, "", "the file cannot be opened for reading", "check its permissions");
+  const FileCloser closer{descriptor};
+  if (::fstat(descriptor, &status) != 0) {
+    throw InputError(path, "", "the file cannot be examined", "check the file");
   }
-  // Read in chunks rather than trusting a size query, which lies for pipes and /proc files.
+  RequireRegularFile(path, status);
+  ::fcntl(descriptor, F_SETFL, ::fcntl(descriptor, F_GETFL) & ~O_NONBLOCK);
+  // Read in chunks rather than trusting the size, which is 0 for /proc files; the size only
+  // reserves memory.
   std::string bytes;
+  if (status.st_size > 0 && static_cast<uintmax_t>(status.st_size) <= kMaxFileBytes) {
+    bytes.reserve(static_cast<size_t>(status.st_size));
+  }
   char chunk[1 << 16];
-  while (in) {
-    in.read(chunk, sizeof chunk);
-    bytes.append(chunk, static_cast<size_t>(in.gcount()));
+  while (true) {
+    const ssize_t count = ::read(descriptor, chunk, sizeof chunk);
+    if (count < 0 && errno == EINTR) continue;
+    if (count < 0) {
+      throw InputError(path, "",
+                       std::string("a read error occurred (") + std::strerror(errno) + ")",
+                       "check the disk and the file");
+    }
+    if (count == 0) break;
+    bytes.append(chunk, static_cast<size_t>(count));
     if (bytes.size() > kMaxFileBytes) {
       throw InputError(path, "", "the file is larger than 2 GiB",
                        "split the mesh or decimate it; ergo reads meshes up to 2 GiB");
     }
-  }
-  if (in.bad()) {
-    throw InputError(path, "", "a read error occurred", "check the disk and the file");
   }
   if (bytes.empty()) {
     throw InputError(path, "", "the file is empty (0 bytes)",
@@ -95,10 +139,6 @@ bool TextReader::NextLine(std::string_view* line) {
   size_t end = text_.find_first_of("\r\n", offset_);
   if (end == std::string_view::npos) end = text_.size();
   ++line_number_;
-  if (end - offset_ > kMaxLineBytes) {
-    Fail("line is longer than 1 MiB: this is binary data or a broken file",
-         "check that the file is a text mesh of the format its extension says");
-  }
   *line = text_.substr(offset_, end - offset_);
   if (line->find('\0') != std::string_view::npos) {
     Fail("line holds binary data (a NUL byte)",
@@ -120,9 +160,17 @@ void TextReader::SkipTo(size_t offset) {
   if (offset > offset_) offset_ = offset;
 }
 
+void TextReader::RequireRecordLength(std::string_view line) const {
+  if (line.size() > kMaxRecordBytes) {
+    Fail("line is longer than 1 MiB: this is binary data or a broken file",
+         "check that the file is a text mesh of the format its extension says");
+  }
+}
+
 bool TextReader::NextTokens(char comment, std::vector<std::string_view>* tokens) {
   std::string_view line;
   while (NextLine(&line)) {
+    RequireRecordLength(line);
     SplitTokens(line, comment, tokens);
     if (!tokens->empty()) return true;
   }
@@ -136,28 +184,47 @@ void TextReader::Fail(const std::string& what, const std::string& fix) const {
   throw InputError(path_, Location(), what, fix);
 }
 
-bool TokenStream::Next(std::string_view* token) {
-  while (next_ >= tokens_.size()) {
-    if (!reader_->NextTokens(comment_, &tokens_)) return false;
-    next_ = 0;
+LineTokens::LineTokens(std::string_view line, char comment) : rest_(line) {
+  if (comment == '\0') return;
+  const size_t start = rest_.find(comment);
+  if (start != std::string_view::npos) rest_ = rest_.substr(0, start);
+}
+
+bool LineTokens::Next(std::string_view* token) {
+  size_t start = 0;
+  while (start < rest_.size() && IsSpace(rest_[start])) ++start;
+  if (start == rest_.size()) {
+    rest_ = {};
+    return false;
   }
-  *token = tokens_[next_++];
+  size_t end = start;
+  while (end < rest_.size() && !IsSpace(rest_[end])) ++end;
+  *token = rest_.substr(start, end - start);
+  rest_.remove_prefix(end);
+  return true;
+}
+
+bool LineTokens::AtEnd() const {
+  for (const char c : rest_) {
+    if (!IsSpace(c)) return false;
+  }
+  return true;
+}
+
+bool TokenStream::Next(std::string_view* token) {
+  while (!line_.Next(token)) {
+    std::string_view line;
+    if (!reader_->NextLine(&line)) return false;
+    line_ = LineTokens(line, comment_);
+  }
   return true;
 }
 
 void SplitTokens(std::string_view line, char comment, std::vector<std::string_view>* tokens) {
   tokens->clear();
-  if (comment != '\0') {
-    const size_t hash = line.find(comment);
-    if (hash != std::string_view::npos) line = line.substr(0, hash);
-  }
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && IsSpace(line[i])) ++i;
-    const size_t start = i;
-    while (i < line.size() && !IsSpace(line[i])) ++i;
-    if (i > start) tokens->push_back(line.substr(start, i - start));
-  }
+  LineTokens cursor(line, comment);
+  std::string_view token;
+  while (cursor.Next(&token)) tokens->push_back(token);
 }
 
 bool ParseDouble(std::string_view token, double* value) {

@@ -12,10 +12,15 @@
 
 namespace ergo {
 
-// Longest line a text mesh format may have; longer means binary data or a broken file.
-inline constexpr size_t kMaxLineBytes = size_t{1} << 20;
+// Longest record of a fixed size (a header line, a vertex, a tetrahedron, a gmsh element):
+// longer means binary data or a broken file. Records whose length grows with the mesh
+// (polygon faces) may be as long as the file: lines are views into the loaded file and are
+// read token by token (LineTokens, TokenStream), so they cost no memory beyond the mesh they
+// describe; only token lists (NextTokens, 16 bytes per token) are bounded by this.
+inline constexpr size_t kMaxRecordBytes = size_t{1} << 20;
 
-// The bytes of `path`. Throws InputError when the file is missing, a directory,
+// The bytes of `path`. Throws InputError when the file is missing, not a regular file (a
+// directory, a FIFO, a device, a socket: checked before reading, so nothing blocks),
 // unreadable, empty, or larger than 2 GiB.
 std::string ReadFileBytes(const std::string& path);
 
@@ -28,12 +33,17 @@ class TextReader {
  public:
   TextReader(std::string path, std::string_view text);
 
-  // The next line without its terminator; false at the end of the text. Throws
-  // InputError for a line longer than kMaxLineBytes or one holding a NUL byte.
+  // The next line without its terminator, of any length; false at the end of the text.
+  // Throws InputError for a line holding a NUL byte.
   bool NextLine(std::string_view* line);
 
+  // Throws InputError naming the line last returned when `line` (that line, or a part of it)
+  // is longer than kMaxRecordBytes: for records of a fixed size.
+  void RequireRecordLength(std::string_view line) const;
+
   // The next line that has at least one token once `comment` and what follows it are
-  // removed; its tokens go to *tokens. False at the end of the text.
+  // removed; its tokens go to *tokens. False at the end of the text. For records of a
+  // fixed size: throws for a line longer than kMaxRecordBytes.
   bool NextTokens(char comment, std::vector<std::string_view>* tokens);
 
   // 1-based number of the line last returned (0 before the first).
@@ -61,6 +71,25 @@ class TextReader {
   int line_number_ = 0;
 };
 
+// The whitespace-separated tokens of one line, one at a time: no list is built, so a line of
+// any length costs nothing.
+class LineTokens {
+ public:
+  LineTokens() = default;
+  // Everything from the first `comment` character on is dropped (no comment when '\0').
+  LineTokens(std::string_view line, char comment);
+
+  // The next token; false when the line has none left.
+  bool Next(std::string_view* token);
+  // True when the line has no token left.
+  bool AtEnd() const;
+  // Bytes of the line after the last token returned.
+  size_t remaining_bytes() const { return rest_.size(); }
+
+ private:
+  std::string_view rest_;
+};
+
 // Tokens across line breaks, for formats whose records may wrap (OFF faces, ASCII STL).
 class TokenStream {
  public:
@@ -69,16 +98,18 @@ class TokenStream {
   // The next token, reading further lines as needed; false at the end of the text.
   bool Next(std::string_view* token);
   // Forgets the rest of the current line (e.g. colours after an OFF face's indices).
-  void SkipRestOfLine() { next_ = tokens_.size(); }
+  void SkipRestOfLine() { line_ = LineTokens(); }
   // True when the current line has no tokens left.
-  bool AtLineEnd() const { return next_ >= tokens_.size(); }
+  bool AtLineEnd() const { return line_.AtEnd(); }
+  // Bytes after the last token returned: the rest of its line and the lines that follow
+  // (without that line's terminator).
+  uint64_t remaining_bytes() const { return line_.remaining_bytes() + reader_->remaining_bytes(); }
   TextReader& reader() { return *reader_; }
 
  private:
   TextReader* reader_;
   char comment_;
-  std::vector<std::string_view> tokens_;
-  size_t next_ = 0;
+  LineTokens line_;
 };
 
 // Splits `line` at spaces, tabs and other ASCII whitespace; drops everything from the

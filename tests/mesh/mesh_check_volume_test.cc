@@ -2,6 +2,7 @@
 // tets are found and named; a file written with the opposite orientation convention gets
 // one message saying so.
 
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/primitives.h"
+#include "ergo/mesh/tetgen_format.h"
 #include "tests/support/test_paths.h"
 
 namespace ergo {
@@ -89,9 +91,43 @@ TEST(Mesh, TetCheckOfAFileNamesItsLines) {
   WriteTetMesh(path, mesh);
   const MeshCheckReport tets = CheckMeshFile(path);
   EXPECT_EQ(tets.ExitCode(), 1);
-  // The .ele file: a header line, then one line per tet.
-  EXPECT_NE(tets.FullReport().find("tetrahedron 3 (line 5)"), std::string::npos)
+  // The .ele file: a header line, then one line per tet; named, since the .node was checked.
+  EXPECT_NE(tets.FullReport().find("tetrahedron 3 (line 5 of grid.ele)"), std::string::npos)
       << tets.FullReport();
+  // Checked by its .ele, the tet's line needs no file name.
+  const MeshCheckReport by_ele = CheckMeshFile(TetGenElePath(path));
+  EXPECT_NE(by_ele.FullReport().find("tetrahedron 3 (line 5) "), std::string::npos)
+      << by_ele.FullReport();
+}
+
+// Each file of a TetGen pair is named for its own lines, whichever of the two was checked.
+TEST(Mesh, TetGenPairMessagesNameTheFileOfTheirLine) {
+  const std::string dir = testing::MakeScratchDir("tetgen_names");
+  TetMesh mesh = Grid();
+  mesh.vertices(7, 0) = mesh.vertices(0, 0);  // vertex 7 now sits on vertex 0
+  mesh.vertices(7, 1) = mesh.vertices(0, 1);
+  mesh.vertices(7, 2) = mesh.vertices(0, 2);
+  WriteTetMesh(dir + "/grid.node", mesh);
+  // The .node line of a vertex, seen from the .ele (a header line, then node 1 on line 2).
+  const std::string by_ele = CheckMeshFile(dir + "/grid.ele").FullReport();
+  EXPECT_NE(by_ele.find("vertex 7 (line 9 of grid.node)"), std::string::npos) << by_ele;
+
+  // A broken .ele, read through its .node: the error names the .ele and its line.
+  std::ofstream(dir + "/bad.node") << "4 3 0 0\n1 0 0 0\n2 0.1 0 0\n3 0 0.1 0\n4 0 0 0.1\n";
+  std::ofstream(dir + "/bad.ele") << "1 4 0\n1 1 2 3 x\n";
+  const MeshCheckReport bad_ele = CheckMeshFile(dir + "/bad.node");
+  EXPECT_EQ(bad_ele.ExitCode(), 2);
+  EXPECT_NE(bad_ele.FullReport().find(dir + "/bad.ele:line 2: unusable: node number 'x'"),
+            std::string::npos)
+      << bad_ele.FullReport();
+  EXPECT_NE(bad_ele.BriefReport().find("unusable: " + dir + "/bad.ele:line 2: "), std::string::npos)
+      << bad_ele.BriefReport();
+
+  // A broken .node, read through its .ele: the error names the .node.
+  std::ofstream(dir + "/bad.node") << "4 3 0 0\n1 0 0 0\n2 0.1 0 nan\n3 0 0.1 0\n4 0 0 0.1\n";
+  const std::string bad_node = CheckMeshFile(dir + "/bad.ele").FullReport();
+  EXPECT_NE(bad_node.find(dir + "/bad.node:line 3: unusable:"), std::string::npos) << bad_node;
+  EXPECT_NE(bad_node.find(dir + "/bad.ele: verdict: unusable"), std::string::npos) << bad_node;
 }
 
 }  // namespace
