@@ -1,5 +1,6 @@
 #include "solvers/history_csv.h"
 
+#include <cmath>
 #include <ostream>
 
 #include "ergo/mesh/atomic_file.h"
@@ -37,8 +38,8 @@ void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
 
 void WriteComparisonCsv(const std::string& path, const std::vector<OptimizerResult>& results) {
   WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "optimizer,initial_phi,final_phi,reduction_percent,evaluations,newton_iterations,"
-           "wall_s,stop_reason\n";
+    out << "optimizer,initial_phi,final_phi,reduction_percent,followed_phi,"
+           "followed_reduction_percent,evaluations,newton_iterations,wall_s,stop_reason\n";
     for (const OptimizerResult& r : results) {
       out << CsvField(r.optimizer) << ',';
       if (r.ok) {
@@ -47,8 +48,16 @@ void WriteComparisonCsv(const std::string& path, const std::vector<OptimizerResu
         WriteDouble(out, r.best_phi);
         out << ',';
         WriteDouble(out, r.ReductionPercent());
+        out << ',';
+        if (std::isfinite(r.followed_phi)) {
+          WriteDouble(out, r.followed_phi);
+          out << ',';
+          WriteDouble(out, 100 * (1 - r.followed_phi / r.initial_phi));
+        } else {
+          out << ',';
+        }
       } else {
-        out << ",,";
+        out << ",,,,";
       }
       out << ',' << r.evaluations << ',' << r.newton_iterations << ',';
       WriteDouble(out, r.seconds);

@@ -15,8 +15,10 @@ namespace ergo {
 // written.
 void WriteHistoryCsv(const std::string& path, const OptimizerResult& result);
 
-// One row per run: optimizer, initial_phi, final_phi, reduction_percent, evaluations,
-// newton_iterations, wall_s, stop_reason.
+// One row per run: optimizer, initial_phi, final_phi, reduction_percent (of the kept design
+// placed afresh, for runs in fresh rounds), followed_phi, followed_reduction_percent (the
+// optimiser's own value there; empty for other runs), evaluations, newton_iterations, wall_s,
+// stop_reason.
 void WriteComparisonCsv(const std::string& path, const std::vector<OptimizerResult>& results);
 
 // A CSV field, quoted (RFC 4180) when it contains a comma, a quote or a line break.

@@ -16,6 +16,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -68,11 +69,18 @@ struct OptimizerResult {
   Eigen::VectorXd best_x;  // the best design evaluated successfully
   double initial_phi = 0;  // φ(x₀)
   double best_phi = 0;     // φ(best_x), as evaluated
+  // When best_phi is the score of best_x placed afresh (MinimizeInRounds): the optimiser's own
+  // value there, on its path. NaN otherwise.
+  double followed_phi = std::numeric_limits<double>::quiet_NaN();
   double best_zeta = 0, best_psi = 0;
   // A copy of the objective as it stood right after evaluating best_x. For a DesignProblem
   // it holds the equilibrium the optimiser saw there: re-evaluating best_x on it reproduces
   // best_phi (a fresh problem may settle into another equilibrium where several exist).
   std::shared_ptr<Objective> best_objective;
+  // The best few distinct designs evaluated (best first, best_x among them) and their φ: a
+  // caller may check them afresh (another placement, another mesh) before it keeps one.
+  std::vector<Eigen::VectorXd> candidates;
+  std::vector<double> candidate_phi;
   std::vector<IterationRecord> history;
   std::string stop_reason;      // e.g. "budget: 200 evaluations", "stalled: ..."
   long evaluations = 0;         // every φ evaluation made (probes, failures included)

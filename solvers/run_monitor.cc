@@ -1,5 +1,6 @@
 #include "solvers/run_monitor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -10,6 +11,7 @@ namespace {
 
 constexpr size_t kRemembered = 4;  // exact repeats: NLopt round restarts, Ceres' first call
 constexpr size_t kLogged = 256;    // enough for a Ceres line search and its iterate
+constexpr size_t kCandidates = 4;  // designs kept for the caller's fresh check
 
 bool SameDesign(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return a.size() == b.size() && (a.array() == b.array()).all();
@@ -104,6 +106,15 @@ bool RunMonitor::Evaluate(Objective& objective, const Eigen::VectorXd& x, bool w
       has_best_ = true;
       best_objective_ = snapshot ? std::move(snapshot) : objective.Clone();
     }
+    // The best few distinct designs, for the caller's fresh check of what it keeps.
+    const bool seen = std::any_of(candidates_.begin(), candidates_.end(),
+                                  [&](const Logged& c) { return SameDesign(c.x, x); });
+    if (!seen) {
+      candidates_.push_back(entry);
+      std::sort(candidates_.begin(), candidates_.end(),
+                [](const Logged& a, const Logged& b) { return a.phi < b.phi; });
+      if (candidates_.size() > kCandidates) candidates_.pop_back();
+    }
     log_.push_back(std::move(entry));
     if (log_.size() > kLogged) log_.pop_front();
     remembered_.emplace_back(x, v);
@@ -196,6 +207,10 @@ OptimizerResult RunMonitor::Finish(const std::string& optimizer_reason) const {
     result.best_zeta = best_.zeta;
     result.best_psi = best_.psi;
     result.best_objective = best_objective_;
+    for (const Logged& c : candidates_) {
+      result.candidates.push_back(c.x);
+      result.candidate_phi.push_back(c.phi);
+    }
   }
   result.initial_phi =
       history_.empty() ? std::numeric_limits<double>::quiet_NaN() : history_.front().phi;

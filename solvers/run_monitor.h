@@ -84,6 +84,7 @@ class RunMonitor {
   Logged best_;
   ObjectiveValue best_value_;                  // with its gradient, if evaluated with one
   std::shared_ptr<Objective> best_objective_;  // cloned right after evaluating best_
+  std::vector<Logged> candidates_;             // the best few distinct designs, best first
   // Recent successful evaluations with everything (answers exact repeats).
   std::deque<std::pair<Eigen::VectorXd, ObjectiveValue>> remembered_;
   std::deque<Logged> log_;  // recent successful evaluations, for Lookup

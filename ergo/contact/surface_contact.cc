@@ -30,6 +30,16 @@ Eigen::Vector3d SurfaceContacts::TotalForceOnBody() const {
   return skin_force.colwise().sum().transpose();
 }
 
+namespace {
+
+// The springs' share of κ·s/2 on each side.
+double SkinShare(const SurfaceContactOptions& o) { return o.support_springs ? o.skin_share : 1.0; }
+double SupportShare(const SurfaceContactOptions& o) {
+  return o.support_springs ? 1 - o.skin_share : 0.5;
+}
+
+}  // namespace
+
 int SurfaceContacts::skin_vertices_in_contact() const {
   int count = 0;
   for (Eigen::Index v = 0; v < skin_load.size(); ++v) count += skin_load[v] > 0;
@@ -42,8 +52,10 @@ Eigen::Matrix3d SurfaceContacts::TranslationStiffness() const {
   // equals the (point, point) block in both cases.
   Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
   for (const Contact& contact : skin.contacts) stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
-  for (const Contact& contact : support.contacts)
-    stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
+  if (support_springs) {
+    for (const Contact& contact : support.contacts)
+      stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
+  }
   return stiffness;
 }
 
@@ -121,7 +133,7 @@ ContactSet SurfaceContact::SupportSprings(const Support& support, bool with_hess
   for (Eigen::Index j = 0; j < count; ++j) {
     const Eigen::Vector3d p = x.row(j).transpose();
     if (clearance_[j] > 0 || !skin_.InBoundingBox(p)) continue;
-    const double k = 0.5 * options_.stiffness * (1 - options_.skin_share) * areas[j];
+    const double k = 0.5 * options_.stiffness * SupportShare(options_) * areas[j];
     if (!(k > 0)) continue;
     SupportPoint& hint = skin_hints_[j];
     hint = skin_.ClosestPoint(p, hint.triangle >= 0 ? &hint : nullptr);
@@ -153,29 +165,32 @@ void SurfaceContact::Evaluate(const Vertices& body_positions, const Support& sup
   MoveSkin(body_positions, support);
   Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
-    stiffness[body_ids_[l]] = 0.5 * options_.stiffness * options_.skin_share * skin_areas_[l];
+    stiffness[body_ids_[l]] = 0.5 * options_.stiffness * SkinShare(options_) * skin_areas_[l];
   c.skin = EvaluateContacts(support, body_positions, body_ids_, stiffness, with_hessian, hints);
   c.support = SupportSprings(support, with_hessian);
-  c.energy = c.skin.energy + c.support.energy;
+  c.support_springs = options_.support_springs;
+  c.energy = c.skin.energy + (c.support_springs ? c.support.energy : 0.0);
   c.max_penetration = std::max(c.skin.max_penetration, c.support.max_penetration);
 
   // Per-vertex forces: each spring pushes its point and, oppositely, its feature's vertices.
   c.skin_force = Vertices::Zero(body_ids_.size(), 3);
   c.support_force = Vertices::Zero(support.mesh().vertices.rows(), 3);
-  c.skin_share = options_.skin_share;
+  c.skin_share = SkinShare(options_);
+  c.support_share = SupportShare(options_);
   c.skin_load = Eigen::VectorXd::Zero(body_ids_.size());
   c.support_load = Eigen::VectorXd::Zero(support.mesh().vertices.rows());
   Eigen::VectorXi local_of = Eigen::VectorXi::Constant(body_positions.rows(), -1);
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l) local_of[body_ids_[l]] = static_cast<int>(l);
   for (const Contact& contact : c.skin.contacts) {
-    c.skin_load[local_of[contact.point]] = contact.force().norm() / options_.skin_share;
+    c.skin_load[local_of[contact.point]] = contact.force().norm() / c.skin_share;
     c.skin_force.row(local_of[contact.point]) -= contact.spring.gradient.segment<3>(0).transpose();
     for (int k = 0; k < contact.anchor.feature.size(); ++k)
       c.support_force.row(contact.anchor.feature.vertices[k]) -=
           contact.spring.gradient.segment<3>(3 + 3 * k).transpose();
   }
   for (const Contact& contact : c.support.contacts) {
-    c.support_load[contact.point] = contact.force().norm() / (1 - options_.skin_share);
+    c.support_load[contact.point] = contact.force().norm() / c.support_share;
+    if (!c.support_springs) continue;  // sampled for the score only
     c.support_force.row(contact.point) -= contact.spring.gradient.segment<3>(0).transpose();
     for (int k = 0; k < contact.anchor.feature.size(); ++k)
       c.skin_force.row(contact.anchor.feature.vertices[k]) -=
@@ -188,9 +203,9 @@ double SurfaceContact::Energy(const Vertices& body_positions, const Support& sup
   MoveSkin(body_positions, support);
   Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
-    stiffness[body_ids_[l]] = 0.5 * options_.stiffness * options_.skin_share * skin_areas_[l];
-  return EvaluateContacts(support, body_positions, body_ids_, stiffness, false, hints).energy +
-         SupportSprings(support, false).energy;
+    stiffness[body_ids_[l]] = 0.5 * options_.stiffness * SkinShare(options_) * skin_areas_[l];
+  const double skin = EvaluateContacts(support, body_positions, body_ids_, stiffness, false, hints).energy;
+  return options_.support_springs ? skin + SupportSprings(support, false).energy : skin;
 }
 
 }  // namespace ergo

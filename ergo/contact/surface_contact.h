@@ -43,6 +43,10 @@ struct SurfaceContactOptions {
   // α, the skin's share of the quadrature, in (0, 1); 0: ContactSkinShare of the skin and of
   // the first support evaluated.
   double skin_share = 0;
+  // false: the support's vertices inside the skin are sampled for the score (p = κg there)
+  // but exert no force, and the skin's springs carry the whole quadrature (α = 1): the
+  // paper's uni-directional equilibrium with its bi-directional score, under one pressure law.
+  bool support_springs = true;
 };
 
 // α = max(½, r/(r + 4)) (at most 0.99), r = ā_support/ā_skin the ratio of the median
@@ -69,7 +73,10 @@ struct SurfaceContacts {
   // contact force's magnitude where all contact normals agree.
   Eigen::VectorXd skin_load;
   Eigen::VectorXd support_load;
-  double skin_share = 0.5;  // α of the evaluation
+  // The fraction of κ·s/2 each side's springs use: α and 1 − α (two-way), or 1 and the ½ of
+  // the score-only support samples.
+  double skin_share = 0.5, support_share = 0.5;
+  bool support_springs = true;  // whether the support springs act in the equilibrium
   double energy = 0;           // J
   double max_penetration = 0;  // m, over both kinds
 

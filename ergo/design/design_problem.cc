@@ -63,6 +63,7 @@ DesignProblem::DesignProblem(const DesignProblem& other)
       start_(other.start_),
       last_state_(other.last_state_),
       cache_(other.cache_),
+      anchors_(other.anchors_),
       counters_(other.counters_) {}
 
 void DesignProblem::set_contact_stiffness(double k) {
@@ -78,6 +79,7 @@ void DesignProblem::set_start(const BodyState& start) {
   start_ = start;
   last_state_ = start;
   cache_.clear();
+  anchors_.clear();
 }
 
 BodyState DesignProblem::FreshStart() const {
@@ -123,13 +125,39 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   // Equilibrium on the support at x (Eq. 7–9).
   const Vertices support_positions = parameterization_.Positions(x);
   support_.UpdateVertices(support_positions);
-  out.equilibrium = solver_.Solve(
-      support_, options_.placement == DesignPlacement::kFresh ? FreshStart() : WarmStart(x));
+  // The start of the solve: placed afresh, warm from the nearest design, or one hop from the
+  // nearest fresh anchor.
+  bool new_anchor = false;
+  BodyState solve_start;
+  if (options_.placement == DesignPlacement::kFollowed) {
+    // A path starts with the body placed afresh.
+    solve_start = cache_.empty() ? FreshStart() : WarmStart(x);
+  } else if (options_.placement == DesignPlacement::kFresh) {
+    solve_start = FreshStart();
+  } else {
+    const std::pair<Eigen::VectorXd, BodyState>* nearest = nullptr;
+    double distance = std::numeric_limits<double>::infinity();
+    for (const auto& anchor : anchors_) {
+      const double move = parameterization_.VertexMoves(x - anchor.first).maxCoeff();
+      if (move < distance) {
+        distance = move;
+        nearest = &anchor;
+      }
+    }
+    new_anchor = nearest == nullptr || distance > options_.anchor_move;
+    solve_start = new_anchor ? FreshStart() : nearest->second;
+  }
+  out.equilibrium = solver_.Solve(support_, solve_start);
   counters_->newton_iterations += out.equilibrium.iterations;
   if (!out.equilibrium.converged)
     return fail("equilibrium failed: " + out.equilibrium.BriefReport());
   const BodyState& state = out.equilibrium.state;
   Remember(x, state);
+  if (new_anchor) {
+    if (static_cast<int>(anchors_.size()) >= std::max(1, options_.warm_start_cache))
+      anchors_.erase(anchors_.begin());
+    anchors_.emplace_back(x, state);
+  }
   last_state_ = state;
 
   // The contact forces the solver used, and the exact K̂ at y* for the adjoint.

@@ -39,15 +39,22 @@ enum class DesignPlacement {
   // of the design alone (DESIGN.md §8), and a design is judged as it will be used.
   kFresh,
   // Warm-started from the equilibrium of the nearest design evaluated before (the paper's
-  // §4.1): cheaper, but contact with a sculpted support can have several nearby equilibria,
+  // §4.1; the first evaluation places the body afresh): cheaper, but contact with a sculpted support can have several nearby equilibria,
   // and a gain may exist only on the path the optimiser followed.
   kFollowed,
+  // Fresh placements as anchors: a design within `anchor_move` (largest vertex move) of an
+  // earlier freshly placed design is warm-started from that anchor's equilibrium (one hop,
+  // never from a warm-started one), any other is placed afresh and becomes an anchor. The
+  // path cannot drift from the equilibria a fresh placement finds by more than one hop, at
+  // about the cost of kFollowed.
+  kAnchored,
 };
 
 struct DesignOptions {
   EquilibriumOptions equilibrium;
   DesignPlacement placement = DesignPlacement::kFresh;
-  double placement_gap = 1e-3;  // m, for kFresh
+  double placement_gap = 1e-3;  // m, for kFresh and kAnchored
+  double anchor_move = 5e-4;    // m, for kAnchored
   PressureCostOptions pressure;            // exponent e, smoothing λ_p
   TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
   double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
@@ -116,6 +123,8 @@ class DesignProblem {
   const BodyState& start() const { return start_; }
   // Moves the start pose (a different placement of the same body); clears the warm starts.
   void set_start(const BodyState& start);
+  // Forgets the warm starts and anchors: the next evaluation places the body afresh.
+  void ClearWarmStarts() { set_start(start_); }
 
  private:
   BodyState WarmStart(const Eigen::VectorXd& x) const;
@@ -135,6 +144,7 @@ class DesignProblem {
   BodyState start_;  // the placement every kFresh evaluation starts from
   BodyState last_state_;
   std::vector<std::pair<Eigen::VectorXd, BodyState>> cache_;
+  std::vector<std::pair<Eigen::VectorXd, BodyState>> anchors_;  // kAnchored: fresh placements
   std::shared_ptr<DesignCounters> counters_;
 };
 

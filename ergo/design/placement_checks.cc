@@ -4,6 +4,9 @@
 #include <cmath>
 #include <array>
 #include <cstdio>
+#include <thread>
+
+#include <omp.h>
 
 namespace ergo {
 
@@ -44,6 +47,38 @@ std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, do
     }
   }
   return checks;
+}
+
+void ForEachInParallel(int count, const std::function<void(int)>& task) {
+  const int cores = std::max(1, omp_get_max_threads());
+  const int workers = std::max(1, std::min(count, cores));
+  const int inner = std::max(1, cores / workers);
+  std::atomic<int> next{0};
+  auto work = [&] {
+    if (workers > 1) omp_set_num_threads(inner);
+    for (int i = next++; i < count; i = next++) task(i);
+  };
+  std::vector<std::thread> threads;
+  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
+  work();
+  for (std::thread& thread : threads) thread.join();
+  omp_set_num_threads(cores);
+}
+
+std::vector<DesignEvaluation> EvaluatePlacements(const DesignProblem& problem,
+                                                 const Eigen::VectorXd& x,
+                                                 const std::vector<Placement>& placements,
+                                                 const std::atomic<bool>* stop) {
+  std::vector<DesignEvaluation> results(placements.size());
+  ForEachInParallel(static_cast<int>(placements.size()), [&](int i) {
+    if (stop && stop->load()) {
+      results[i].message = "interrupted";
+      return;
+    }
+    DesignProblem placed = PlacedProblem(problem, placements[i]);
+    results[i] = placed.Evaluate(x, false);
+  });
+  return results;
 }
 
 DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& placement) {

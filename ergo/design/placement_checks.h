@@ -5,6 +5,8 @@
 // copy of the problem. Units: m, rad.
 #pragma once
 
+#include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,7 +30,18 @@ std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, do
                                        bool with_tilts);
 
 // A copy of `problem` whose evaluations place the body afresh from its start pose moved by
-// `placement`.
+// `placement` (a zero placement: the centred pose).
 DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& placement);
+
+// Design x placed afresh at every placement, each on its own copy of `problem`, in parallel
+// threads. A placement not started because *stop became true fails with "interrupted".
+std::vector<DesignEvaluation> EvaluatePlacements(const DesignProblem& problem,
+                                                 const Eigen::VectorXd& x,
+                                                 const std::vector<Placement>& placements,
+                                                 const std::atomic<bool>* stop = nullptr);
+
+// Runs task(i) for i in [0, count) on min(count, cores) threads, sharing the cores among
+// them (each thread's OpenMP regions get cores / threads).
+void ForEachInParallel(int count, const std::function<void(int)>& task);
 
 }  // namespace ergo

@@ -49,8 +49,7 @@ ScorePartials PressureScorePartials(const ContactPressures& pressures, const Lay
       const Eigen::Vector3d force = contact.force();
       const double magnitude = force.norm();
       if (weight == 0 || magnitude == 0) continue;
-      const double share =
-          point_on_body ? contacts.skin_share : 1 - contacts.skin_share;
+      const double share = point_on_body ? contacts.skin_share : contacts.support_share;
       // ∂(‖f‖/share)/∂z = −f̂ᵀ ∂²E/∂p∂z / share for every spring variable z.
       const Eigen::Matrix<double, 1, 12> row = -(weight / (share * magnitude)) *
                                                force.transpose() *
@@ -86,6 +85,7 @@ SupportShapeGradient ResidualShapeContraction(const SurfaceContacts& contacts,
   out.area = Eigen::VectorXd::Zero(contacts.support_force.rows());
   for (int side = 0; side < 2; ++side) {
     const bool point_on_body = side == 0;
+    if (!point_on_body && !contacts.support_springs) break;  // score-only: not in G
     for (const Contact& contact : (point_on_body ? contacts.skin : contacts.support).contacts) {
       Variable variables[4];
       const int n = SpringVariables(contact, point_on_body, skin, variables);

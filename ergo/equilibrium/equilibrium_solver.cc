@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <glog/logging.h>
@@ -71,7 +72,8 @@ std::string EquilibriumResult::FullReport() const {
 EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options)
     : body_(body),
       options_(options),
-      potential_(body, SurfaceContactOptions{options.contact_stiffness, options.contact_skin_share}) {
+      potential_(body, SurfaceContactOptions{options.contact_stiffness, options.contact_skin_share,
+                                       options.contact_support_springs}) {
   CHECK_GT(options.relative_tolerance, 0.0);
   CHECK_GE(options.max_iterations, 1);
   CHECK_GT(options.free_fall_mass_scale, 0.0);
@@ -265,6 +267,33 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     const double largest =
         system.layout().VertexVelocity(body_, state, e.positions, step).rowwise().norm().maxCoeff();
     if (in_contact && largest > cap) step *= cap / largest;
+    double free_fall_max_step = GoldenSectionOptions().max_step;
+    if (!in_contact) {
+      // In free fall no step may carry the skin past the support (a thin support would be
+      // jumped): the largest vertex move is capped at the skin's clearance (sphere tracing),
+      // plus a thousandth of the body's size to land in contact.
+      double clearance = std::numeric_limits<double>::infinity();
+      for (Eigen::Index l = 0; l < body_.skin().vertices.size(); ++l)
+        clearance = std::min(clearance,
+                             std::sqrt(support.ClosestPoint(
+                                 e.positions.row(body_.skin().vertices[l]).transpose())
+                                           .squared_distance));
+      const double move = system.layout()
+                              .VertexVelocity(body_, state, e.positions, step)
+                              .rowwise()
+                              .norm()
+                              .maxCoeff();
+      clearance += 1e-3 * body_size_;
+      if (move > 0 && std::isfinite(clearance)) {
+        if (move > clearance) {
+          step *= clearance / move;  // land on the support, no farther
+          free_fall_max_step = 1;
+        } else {
+          free_fall_max_step = clearance / move;
+        }
+      }
+    }
+
     const double slope = e.gradient.dot(step);
     if (!step.allFinite() || !(slope < 0)) {
       return finish(EquilibriumStatus::kNonFinite,
@@ -279,6 +308,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     };
     GoldenSectionOptions search;
     search.expand = !in_contact;
+    search.max_step = free_fall_max_step;
     search.max_evaluations = options_.max_line_search_evaluations;
     search.noise = 1e-12 * (std::abs(energy0) + energy_scale);
     const GoldenSectionResult found = GoldenSectionSearch(phi, slope, search);

@@ -34,6 +34,9 @@ struct EquilibriumOptions {
   // α, the skin's share of the contact quadrature (SurfaceContactOptions::skin_share); 0:
   // chosen from the meshes at the first solve (ContactSkinShare).
   double contact_skin_share = 0;
+  // false: support vertices inside the skin are scored but push nothing (the paper's
+  // uni-directional equilibrium; SurfaceContactOptions::support_springs).
+  bool contact_support_springs = true;
   // Converged when ResidualNorm ≤ relative_tolerance · |weight + external force|.
   double relative_tolerance = 1e-8;
   int max_iterations = 100;

@@ -64,6 +64,7 @@ void TotalPotential::Evaluate(const BodyState& state, const Support& support, He
   }
   const Eigen::VectorXi& skin_vertices = body().skin().vertices;
   for (const Contact& contact : e.contacts.support.contacts) {
+    if (!e.contacts.support_springs) break;  // score-only samples
     const Feature& feature = contact.anchor.feature;
     std::vector<int> vertices(static_cast<size_t>(feature.size()));
     for (int k = 0; k < feature.size(); ++k) {

@@ -25,6 +25,7 @@ struct Case {
   DesignParameterization parameterization;
   double smoothing_radius = 0;  // pressure smoothing: 0 = umbrella, else Helmholtz, m
   double filter_radius = 0;     // for kFiltered, m
+  bool support_springs = true;  // two-way contact, or support vertices scored only
 };
 
 // A 10 cm soft hollow cube standing on a corner in a coarse square pyramid pit (45° facets,
@@ -67,7 +68,7 @@ PitScene MakePitScene(const std::string& lock) {
 
 DesignOptions TightOptions(DesignParameterization parameterization,
                            const std::vector<bool>& active, double smoothing_radius = 0,
-                           double filter_radius = 0) {
+                           double filter_radius = 0, bool support_springs = true) {
   DesignOptions options;
   options.equilibrium.contact_stiffness = 3e7;  // κ, Pa/m
   // Tight equilibria: the FD quotient differences φ at x ± h d; an equilibrium error δy
@@ -76,6 +77,7 @@ DesignOptions TightOptions(DesignParameterization parameterization,
   options.equilibrium.max_iterations = 200;
   options.pressure = {3, 1.0, smoothing_radius};
   options.filter_radius = filter_radius;
+  options.equilibrium.contact_support_springs = support_springs;
   options.taubin = {0.5, -0.53, 2};
   options.gamma = 0;  // set per check
   options.parameterization = parameterization;
@@ -128,7 +130,7 @@ TEST_P(DesignGradient, AdjointGradientMatchesFiniteDifferencesThroughTheEquilibr
   const PitScene scene = MakePitScene(c.lock);
   DesignProblem problem(scene.body, scene.support, scene.start,
                         TightOptions(c.parameterization, scene.active, c.smoothing_radius,
-                                     c.filter_radius));
+                                     c.filter_radius, c.support_springs));
   const Eigen::VectorXd x0 = problem.InitialDesign();
   // γ of the same order as ζ/ψ so that both parts matter in φ.
   DesignEvaluation at = problem.Evaluate(x0, true);
@@ -201,7 +203,10 @@ INSTANTIATE_TEST_SUITE_P(
         // The scenarios' default: the filtered design space and the Helmholtz pressure
         // smoothing (radii of the order of the cube's 3.3 cm skin edge).
         Case{"rotation_free_filtered_helmholtz", "tx,tz", DesignParameterization::kFiltered,
-             0.05, 0.08}),
+             0.05, 0.08},
+        // The paper's uni-directional equilibrium with the support's vertices scored only.
+        Case{"one_way_filtered_helmholtz", "tx,tz", DesignParameterization::kFiltered, 0.05,
+             0.08, false}),
     [](const auto& info) { return info.param.name; });
 
 TEST(DesignGradientFailure, ANonConvergingEquilibriumGivesAClearFailureNotANumber) {

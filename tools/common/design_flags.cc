@@ -24,11 +24,15 @@ DEFINE_string(contact_stiffness, "scenario",
               "spring is κ times its area), auto (calibrate to --target_penetration), or "
               "scenario (the preset's)");
 DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
-DEFINE_string(placement, "fresh",
-              "where each evaluation's equilibrium starts: fresh (the body placed afresh from its "
-              "start pose on every design, as a person steps onto the part: the score is a "
-              "function of the design) or followed (warm-started from the nearest design "
-              "evaluated before, the paper's: cheaper, but a gain may hold only on that path)");
+DEFINE_bool(support_springs, true,
+            "two-way contact: support vertices inside the skin push it (false: they are scored "
+            "but push nothing, the paper's uni-directional equilibrium)");
+DEFINE_string(placement, "followed",
+              "where the optimiser's evaluations start their equilibria: followed (warm from the "
+              "nearest design evaluated before, the paper's; a path starts placed afresh and "
+              "ergo_optimize keeps only designs a fresh placement confirms), anchored (one hop "
+              "from the nearest fresh placement) or fresh (every design placed afresh: the "
+              "score is a function of the design, but a noisy one)");
 
 namespace ergo {
 namespace {
@@ -57,10 +61,13 @@ void ApplyDesignFlags(Scenario* scenario) {
     design.placement = DesignPlacement::kFresh;
   } else if (FLAGS_placement == "followed") {
     design.placement = DesignPlacement::kFollowed;
+  } else if (FLAGS_placement == "anchored") {
+    design.placement = DesignPlacement::kAnchored;
   } else {
     throw InputError("--placement", "", "'" + FLAGS_placement + "' is unknown",
-                     "use fresh or followed");
+                     "use fresh, anchored or followed");
   }
+  design.equilibrium.contact_support_springs = FLAGS_support_springs;
   design.pressure.exponent = FLAGS_exponent;
   design.pressure.smoothing = FLAGS_pressure_smoothing;
   design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};

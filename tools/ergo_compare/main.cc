@@ -6,16 +6,20 @@
 //       --max_evals=200 [--max_seconds=S] --out=DIR
 //   ergo_compare --flagfile=data/chair.flags --optimizers=... --max_evals=200 --out=DIR
 //
+// Every optimiser runs in the same fresh rounds as ergo_optimize (solvers/fresh_rounds.h):
+// the design each keeps is the one that scores best with the body placed afresh, and the
+// table ranks them by that fresh reduction (the optimiser's own value on its path beside it).
 // Writes DIR/compare.csv, DIR/<optimizer>_history.csv and DIR/compare.png (φ/φ₀ against
 // evaluations and against seconds, by tools/plot_compare.py; skipped with a warning when
-// python3 or matplotlib is missing) and prints the table. Ctrl-C stops the running
-// optimiser cleanly with its best design so far and skips the rest.
+// python3 or matplotlib is missing) and prints the table; DIR appears as a whole. Ctrl-C or
+// SIGTERM stops the running optimiser cleanly with its best design so far and skips the rest.
 //
 // Exit status: 0 success, 1 an optimiser crashed, 2 bad input (flags, scenario),
-// 130 interrupted (outputs are still written).
+// 130 / 143 interrupted (outputs are still written).
 
-#include <atomic>
-#include <csignal>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -30,10 +34,14 @@
 
 #include "ergo/mesh/input_error.h"
 #include "solvers/design_objective.h"
+#include "solvers/fresh_rounds.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
 #include "tools/common/child_process.h"
 #include "tools/common/design_flags.h"
+#include "tools/common/flag_checks.h"
+#include "tools/common/output_directory.h"
+#include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
 
 #ifndef ERGO_TOOLS_DIR
@@ -62,6 +70,10 @@ DEFINE_double(round_move_mm, 2,
 DEFINE_int32(round_evaluations, 10, "nlopt-*: evaluations per round");
 DEFINE_int32(lbfgs_rank, 20, "ceres-lbfgs: L-BFGS memory");
 DEFINE_double(target_reduction, 70, "the table reports when each optimiser first reached this %");
+DEFINE_int32(round_evals, 40,
+             "evaluations per round before the best designs are placed afresh (as ergo_optimize); "
+             "0 = one round");
+DEFINE_int32(candidates, 3, "designs of each round placed afresh before one is kept");
 DEFINE_string(out, "", "output directory (required; created if missing)");
 DEFINE_bool(progress, true, "print one line per optimiser iteration");
 DEFINE_bool(plot, true, "write compare.png with tools/plot_compare.py (python3 + matplotlib)");
@@ -77,13 +89,6 @@ constexpr char kUsage[] =
     "      "
     "--optimizers=paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,steepest\n"
     "      --max_evals=N [--max_seconds=S] --out=DIR";
-
-std::atomic<bool> interrupted{false};
-
-extern "C" void OnInterrupt(int) {
-  interrupted.store(true);
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills
-}
 
 [[noreturn]] void FlagError(const std::string& flag, const std::string& what,
                             const std::string& fix) {
@@ -125,6 +130,9 @@ OptimizerOptions OptionsFromFlags() {
   if (!(FLAGS_total_move_mm > 0)) FlagError("total_move_mm", "must be positive", "e.g. 20");
   if (!(FLAGS_round_move_mm >= 0)) FlagError("round_move_mm", "must be >= 0", "e.g. 2");
   if (FLAGS_round_evaluations < 1) FlagError("round_evaluations", "must be >= 1", "e.g. 10");
+  RequireInRange("round_evals", static_cast<long>(FLAGS_round_evals), 0, 1000000,
+                 "e.g. 40; 0 = one round");
+  RequireInRange("candidates", static_cast<long>(FLAGS_candidates), 1, 10, "e.g. 3");
   options.limits.total = 1e-3 * FLAGS_total_move_mm;
   options.limits.per_round = 1e-3 * FLAGS_round_move_mm;
   options.limits.round_evaluations = FLAGS_round_evaluations;
@@ -134,8 +142,13 @@ OptimizerOptions OptionsFromFlags() {
 }
 
 Budget BudgetFromFlags() {
-  if (FLAGS_max_evals < 1) FlagError("max_evals", "must be >= 1", "e.g. --max_evals=200");
-  if (!(FLAGS_max_seconds >= 0)) FlagError("max_seconds", "must be >= 0", "0 = unlimited");
+  RequireInRange("max_evals", static_cast<long>(FLAGS_max_evals), 1, 1000000,
+                 "e.g. --max_evals=200");
+  RequireInRange("max_seconds", FLAGS_max_seconds, 0, 1e7, "seconds, 0 = unlimited");
+  RequireInRange("gradient_tolerance", FLAGS_gradient_tolerance, 0, 1, "e.g. 1e-8");
+  RequireInRange("function_tolerance", FLAGS_function_tolerance, 0, 1, "e.g. 1e-10");
+  RequireInRange("parameter_tolerance", FLAGS_parameter_tolerance, 0, 1e3, "e.g. 1e-8");
+  RequireInRange("target_reduction", FLAGS_target_reduction, -1e6, 100, "a percentage, e.g. 70");
   Budget budget;
   budget.max_evaluations = FLAGS_max_evals;
   budget.max_seconds = FLAGS_max_seconds;
@@ -154,19 +167,29 @@ const IterationRecord* FirstReaching(const OptimizerResult& result, double targe
   return nullptr;
 }
 
-void PrintTable(const std::vector<OptimizerResult>& results) {
+void PrintTable(std::vector<OptimizerResult> results) {
+  // Ranked by the fresh reduction: what a person placed on each kept design gets.
+  std::stable_sort(results.begin(), results.end(),
+                   [](const OptimizerResult& a, const OptimizerResult& b) {
+                     return (a.ok ? a.ReductionPercent() : -1e300) >
+                            (b.ok ? b.ReductionPercent() : -1e300);
+                   });
   const std::string target = std::to_string(static_cast<int>(FLAGS_target_reduction)) + "%";
   std::cout << "\n"
             << std::left << std::setw(13) << "optimizer" << std::right << std::setw(13)
-            << "final phi" << std::setw(10) << "reduct %" << std::setw(7) << "evals" << std::setw(8)
-            << "newton" << std::setw(9) << "wall s" << std::setw(14) << ("evals to " + target)
-            << std::setw(15) << ("newton to " + target) << "  "
+            << "fresh phi" << std::setw(10) << "fresh %" << std::setw(11) << "followed %"
+            << std::setw(7) << "evals" << std::setw(8) << "newton" << std::setw(9) << "wall s"
+            << std::setw(14) << ("evals to " + target) << std::setw(15) << ("newton to " + target)
+            << "  "
             << "stop reason\n";
   for (const OptimizerResult& r : results) {
     const IterationRecord* reached = FirstReaching(r, FLAGS_target_reduction);
+    const double followed =
+        std::isfinite(r.followed_phi) ? 100 * (1 - r.followed_phi / r.initial_phi) : NAN;
     std::cout << std::left << std::setw(13) << r.optimizer << std::right << std::setprecision(5)
               << std::setw(13) << (r.ok ? r.best_phi : 0.0) << std::fixed << std::setprecision(1)
-              << std::setw(10) << r.ReductionPercent() << std::setw(7) << r.evaluations
+              << std::setw(10) << r.ReductionPercent() << std::setw(11) << followed
+              << std::setw(7) << r.evaluations
               << std::setw(8) << r.newton_iterations << std::setw(9) << r.seconds
               << std::defaultfloat << std::setw(14)
               << (reached ? std::to_string(reached->evaluations) : "-") << std::setw(15)
@@ -203,7 +226,6 @@ void Plot(const std::string& out_dir) {
 }
 
 int Compare() {
-  if (FLAGS_out.empty()) FlagError("out", "is required", "give the output directory, --out=DIR");
   std::vector<std::string> names = SplitList(FLAGS_optimizers);
   if (names.empty()) FlagError("optimizers", "is empty", "e.g. --optimizers=paper-ncg,steepest");
   const OptimizerOptions options = OptionsFromFlags();
@@ -212,6 +234,10 @@ int Compare() {
     std::string error;
     if (!MakeOptimizer(name, options, &error)) FlagError("optimizers", error, "fix the list");
   }
+  if (FLAGS_out.empty()) FlagError("out", "is required", "give the output directory, --out=DIR");
+  StopOnSignals signals;
+  OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
+  const std::string out_dir = output.path();
 
   Scenario scenario;
   try {
@@ -223,12 +249,6 @@ int Compare() {
                      std::string("the scenario could not be built: ") + e.what(),
                      "check the scenario's flags");
   }
-  std::error_code error;
-  std::filesystem::create_directories(FLAGS_out, error);
-  if (error || !std::filesystem::is_directory(FLAGS_out)) {
-    FlagError("out", "cannot create directory " + FLAGS_out + ": " + error.message(),
-              "choose a writable path");
-  }
   std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n";
   // The same problem as ergo_optimize poses from the same flags (γ fixed once, on x₀).
   ApplyDesignFlags(&scenario);
@@ -238,20 +258,44 @@ int Compare() {
     gamma = ApplyGammaFlags(&probe);
   }
   scenario.design.gamma = gamma;
+  // The fresh score every kept design must earn (the same for every optimiser).
+  DesignProblem fresh = scenario.MakeProblem();
+  fresh.set_placement(DesignPlacement::kFresh);
+  const Eigen::VectorXd x0 = fresh.InitialDesign();
+  const DesignEvaluation start = DesignProblem(fresh).Evaluate(x0, false);
+  if (StopOnSignals::stopped()) {
+    std::cerr << "ergo_compare: interrupted before any result; nothing written\n";
+    return StopOnSignals::ExitCode();
+  }
+  if (!start.ok) {
+    std::cerr << "ergo_compare: the initial equilibrium failed: " << start.message << "\n";
+    return 1;
+  }
+  RoundsProblem rounds_problem;
+  rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
+    const DesignEvaluation e = DesignProblem(fresh).Evaluate(x, false);
+    return e.ok ? e.phi : std::numeric_limits<double>::quiet_NaN();
+  };
+  RoundsOptions rounds_options;
+  rounds_options.round_evaluations = FLAGS_round_evals;
+  rounds_options.candidates = FLAGS_candidates;
 
-  std::signal(SIGINT, OnInterrupt);
   std::vector<OptimizerResult> results;
   bool crashed = false;
   for (const std::string& name : names) {
-    if (interrupted.load()) {
+    if (StopOnSignals::stopped()) {
       std::cout << name << ": not run (interrupted)\n";
       continue;
     }
     std::unique_ptr<Optimizer> optimizer = MakeOptimizer(name, options, nullptr);
-    DesignObjective objective(scenario.MakeProblem());  // fresh: no warm starts leak
-    std::cout << "\n" << name << " on " << objective.Describe() << "\n";
+    // Every optimiser from a fresh problem: no warm starts leak between them.
+    const DesignProblem base = scenario.MakeProblem();
+    rounds_problem.make_objective = [&]() -> std::unique_ptr<Objective> {
+      return std::make_unique<DesignObjective>(base);
+    };
+    std::cout << "\n" << name << " on " << DesignObjective(base).Describe() << "\n";
     RunControl control;
-    control.stop = &interrupted;
+    control.stop = &StopOnSignals::flag();
     if (FLAGS_progress) {
       control.progress = [&name](const IterationRecord& r) {
         std::cout << "  " << name << " it " << r.iteration << ": phi " << std::setprecision(6)
@@ -263,29 +307,31 @@ int Compare() {
     }
     OptimizerResult result;
     try {
-      result = optimizer->Minimize(objective, objective.problem().InitialDesign(), budget, control);
+      result = MinimizeInRounds(*optimizer, rounds_problem, x0, start.phi, budget, control,
+                                rounds_options)
+                   .result;
     } catch (const std::exception& e) {
       crashed = true;
       result.optimizer = name;
       result.stop_reason = std::string("crashed: ") + e.what();
     }
-    std::cout << result.BriefReport() << "\n";
-    // The problem's own counters must agree with what the optimiser reported.
-    const long counted = objective.problem().counters().evaluations.load();
-    if (!crashed && counted != result.evaluations) {
-      std::cerr << "ergo_compare: warning: " << name << " reported " << result.evaluations
-                << " evaluations but the problem counted " << counted << "\n";
-    }
-    WriteHistoryCsv(FLAGS_out + "/" + name + "_history.csv", result);
+    std::cout << result.BriefReport() << " (kept design placed afresh; on its path "
+              << (std::isfinite(result.followed_phi) ? result.followed_phi : start.phi) << ")\n";
+    WriteHistoryCsv(out_dir + "/" + name + "_history.csv", result);
     results.push_back(std::move(result));
   }
-  WriteComparisonCsv(FLAGS_out + "/compare.csv", results);
+  WriteComparisonCsv(out_dir + "/compare.csv", results);
   PrintTable(results);
-  std::cout << "\nwrote " << FLAGS_out << "/compare.csv and " << results.size()
+  if (FLAGS_plot && !StopOnSignals::stopped()) Plot(out_dir);
+  std::string error;
+  if (!output.Commit(&error)) {
+    std::cerr << "ergo_compare: " << error << "\n";
+    return 1;
+  }
+  std::cout << "\nwrote " << output.final_path() << "/compare.csv and " << results.size()
             << " history CSVs\n";
-  Plot(FLAGS_out);
   if (crashed) return 1;
-  return interrupted.load() ? 130 : 0;
+  return StopOnSignals::stopped() ? StopOnSignals::ExitCode() : 0;
 }
 
 }  // namespace
@@ -293,14 +339,15 @@ int Compare() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(ergo::kUsage);
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
-  if (argc != 1) {
-    std::cerr << "ergo_compare: unexpected argument `" << argv[1] << "`\nusage: " << ergo::kUsage
-              << "\n";
+  try {
+    ergo::CheckCommandLine(argc, argv);
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_compare: " << error.what() << "\nusage: " << ergo::kUsage << "\n";
     return 2;
   }
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  ergo::LogToStderrOnly();
+  google::InitGoogleLogging(argv[0]);
   try {
     return ergo::Compare();
   } catch (const ergo::InputError& error) {

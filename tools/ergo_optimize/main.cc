@@ -1,37 +1,42 @@
 // ergo_optimize: the designer's main job (paper §4–5). Takes a scenario (chair, shoe sole,
 // mouse, …: --flagfile=data/SCENARIO.flags, any flag overridable), optimises the support's
-// shape for even contact pressure with the chosen optimiser and budget, and writes to
-// --out (default ./ergo_out): summary.md / summary.json (the paper's Table 1 columns),
-// history.csv, the initial and optimised support as PLY and print-ready STL (mm), body and
-// support VTU with pressure and displacement fields, and PNG pictures. Ctrl-C stops cleanly
-// and writes everything for the best design so far. With no flags: the quick shoe sole.
-#include <atomic>
+// shape for even contact pressure with the chosen optimiser and budget, and writes to --out
+// (default ./ergo_out): summary.md / summary.json (the paper's Table 1 columns with the body
+// placed afresh on the kept design as the headline, the optimiser's own path beside it,
+// placement checks, the skin's side of the score), history.csv, the initial and optimised
+// support as PLY and print-ready STL (mm), body and support VTU with pressure and
+// displacement fields, and PNG pictures. The outputs appear as one unit (a killed run
+// leaves the previous complete set or none). Ctrl-C or SIGTERM stops cleanly and writes
+// everything for the best design so far (exit 130 / 143); a second signal ends at once.
+// With no flags: the quick shoe sole.
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
-#include <Eigen/Geometry>
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 #include <omp.h>
 
 #include "ergo/design/placement_checks.h"
-#include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/laplacian.h"
 #include "solvers/design_objective.h"
+#include "solvers/fresh_rounds.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
+#include "solvers/robust_design_objective.h"
 #include "tools/common/child_process.h"
 #include "tools/common/design_flags.h"
+#include "tools/common/flag_checks.h"
+#include "tools/common/output_directory.h"
+#include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
 #include "tools/ergo_optimize/run_outputs.h"
+#include "tools/ergo_optimize/run_summary.h"
 
 #ifndef ERGO_TOOLS_DIR
 #define ERGO_TOOLS_DIR ""
@@ -40,16 +45,29 @@
 DEFINE_string(
     optimizer, "paper-ncg",
     "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, nlopt-lbfgs");
-DEFINE_int32(max_evals, 100, "budget: φ evaluations (equilibrium solves), probes included");
+DEFINE_int32(max_evals, 100,
+             "budget: φ evaluations (equilibrium solves), probes and fresh checks included");
 DEFINE_double(max_seconds, 0, "budget: wall seconds; 0 = unlimited");
-DEFINE_string(out, "ergo_out", "output directory (created if missing)");
+DEFINE_string(out, "ergo_out", "output directory (created if missing; replaced as a whole)");
 DEFINE_int32(post_smoothing, 0,
              "Taubin iterations applied to the optimised design's designed region (paper §5.1; "
-             "chair: a few)");
+             "chair: a few); kept only if the body placed afresh scores better");
 DEFINE_int32(threads, 0,
              "threads for assembly, contact and the probes' equilibria (0 = all cores)");
 DEFINE_bool(plot, true, "write PNG pictures with tools/plot_results.py (python3 + matplotlib)");
 DEFINE_bool(progress, true, "print one line per iteration");
+DEFINE_int32(round_evals, 40,
+             "evaluations per round: the optimiser follows its own path for at most this many, "
+             "then its best designs are placed afresh and the best starts the next round; 0 = "
+             "one round with the whole budget");
+DEFINE_int32(candidates, 3, "designs of each round placed afresh before one is kept");
+DEFINE_int32(robust_placements, 1,
+             "optimise the mean score over K placements of the body (1, 3 or 5: centred, and "
+             "±--robust_shift_mm along the longer or both horizontal axes), each with its own "
+             "equilibrium and adjoint, in parallel threads");
+DEFINE_double(robust_shift_mm, 3, "--robust_placements: the shift of the off-centre placements, mm");
+DEFINE_bool(placement_checks, true,
+            "score the initial and the kept design with the body placed off centre and tilted");
 DEFINE_double(placement_shift_mm, 3,
               "placement checks: the body lands this far off along each horizontal axis, mm");
 DEFINE_double(placement_tilt_deg, 1,
@@ -58,17 +76,42 @@ DEFINE_double(placement_tilt_deg, 1,
 namespace ergo {
 namespace {
 
-std::atomic<bool> g_stop{false};
-
-void OnInterrupt(int) {
-  g_stop = true;
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills
+// Every flag of this tool checked before any work (the scene's and the problem's are checked
+// where they are read, also before any computation).
+void ValidateRunFlags() {
+  RequireInRange("max_evals", static_cast<long>(FLAGS_max_evals), 1, 1000000,
+                 "e.g. --max_evals=100");
+  RequireInRange("max_seconds", FLAGS_max_seconds, 0, 1e7, "seconds, 0 = unlimited");
+  RequireInRange("post_smoothing", static_cast<long>(FLAGS_post_smoothing), 0, 1000,
+                 "Taubin iterations, e.g. 3; 0 = none");
+  RequireInRange("threads", static_cast<long>(FLAGS_threads), 0, 1024, "0 = all cores");
+  RequireInRange("round_evals", static_cast<long>(FLAGS_round_evals), 0, 1000000,
+                 "e.g. 40; 0 = one round");
+  RequireInRange("candidates", static_cast<long>(FLAGS_candidates), 1, 10, "e.g. 3");
+  if (FLAGS_robust_placements != 1 && FLAGS_robust_placements != 3 &&
+      FLAGS_robust_placements != 5) {
+    throw InputError("--robust_placements", "",
+                     "is " + std::to_string(FLAGS_robust_placements) + "; it must be 1, 3 or 5",
+                     "1 = the centred placement only");
+  }
+  RequireInRange("robust_shift_mm", FLAGS_robust_shift_mm, 0.01, 50, "millimetres, e.g. 3");
+  RequireInRange("placement_shift_mm", FLAGS_placement_shift_mm, 0, 50, "millimetres, e.g. 3");
+  RequireInRange("placement_tilt_deg", FLAGS_placement_tilt_deg, 0, 30, "degrees, e.g. 1");
+  std::string error;
+  if (!MakeOptimizer(FLAGS_optimizer, OptimizerOptions(), &error))
+    throw InputError("--optimizer", "", "'" + FLAGS_optimizer + "' is unknown", error);
 }
 
-std::string Format(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), format, value);
-  return buffer;
+std::string PlacementName(DesignPlacement placement) {
+  switch (placement) {
+    case DesignPlacement::kFresh:
+      return "fresh";
+    case DesignPlacement::kFollowed:
+      return "followed";
+    case DesignPlacement::kAnchored:
+      return "anchored";
+  }
+  return "?";
 }
 
 // The designed region smoothed by Taubin steps (non-designed vertices fixed), as the design
@@ -82,125 +125,100 @@ Eigen::VectorXd PostSmooth(const DesignProblem& problem, const Eigen::VectorXd& 
   return problem.parameterization().DesignFor(smoothed.vertices);
 }
 
-Json SummaryJson(const Scenario& scenario, const DesignReport& initial,
-                 const DesignReport& optimized, const OptimizerResult& result, double gamma,
-                 double wall, double stiffness) {
-  Json s = Json::Object();
-  s["scenario"] = scenario.name;
-  s["description"] = scenario.description;
-  s["optimizer"] = result.optimizer;
-  s["initial_score"] = initial.evaluation.phi;
-  s["optimized_score"] = optimized.evaluation.phi;
-  s["reduction_percent"] = 100.0 * (1.0 - optimized.evaluation.phi / initial.evaluation.phi);
-  s["initial_zeta"] = initial.evaluation.zeta;
-  s["initial_skin_zeta"] = initial.evaluation.zeta_human;
-  s["initial_support_zeta"] = initial.evaluation.zeta_support;
-  s["optimized_zeta"] = optimized.evaluation.zeta;
-  s["gamma"] = gamma;
-  s["wall_s"] = wall;
-  s["body_vertices"] = static_cast<long>(scenario.body->rest().vertices.rows());
-  s["support_vertices"] = static_cast<long>(scenario.support.vertices.rows());
-  s["contact_vertices"] = optimized.evaluation.equilibrium.contact_vertices;
-  s["initial_contact_vertices"] = initial.evaluation.equilibrium.contact_vertices;
-  s["initial_max_penetration_m"] = initial.evaluation.equilibrium.max_penetration;
-  s["optimized_max_penetration_m"] = optimized.evaluation.equilibrium.max_penetration;
-  s["initial_peak_pressure_Pa"] = initial.peak_pressure;
-  s["optimized_peak_pressure_Pa"] = optimized.peak_pressure;
-  s["contact_stiffness"] = stiffness;
-  s["evaluations"] = result.evaluations;
-  s["failed_evaluations"] = result.failed_evaluations;
-  s["newton_iterations"] = result.newton_iterations;
-  s["stop_reason"] = result.stop_reason;
-  s["load_N"] = scenario.body->TotalLoad().norm();
-  return s;
-}
-
-// The fresh-placement check in one sentence.
-std::string FreshPlacementLine(const Json& s) {
-  if (!s.Find("fresh_placement_converged")->AsBool()) {
-    return "The body placed afresh on the optimised design did not reach equilibrium.\n\n";
+// Runs the plotting script on the written outputs; a missing matplotlib or an interrupted
+// plot is a warning, never a failure of the run.
+void Plot(const std::string& dir) {
+  const std::string python = FindPythonWithMatplotlib();
+  if (python.empty()) {
+    std::cerr << "warning: pictures not written: no python3 with matplotlib found (Debian: "
+                 "apt-get install python3-matplotlib)\n";
+    return;
   }
-  return "The body placed afresh on the optimised design (from the start pose) settles with "
-         "φ " +
-         Format("%.4g", s.Find("fresh_placement_score")->AsNumber()) + " (" +
-         Format("%.1f", s.Find("fresh_placement_reduction_percent")->AsNumber()) +
-         " % below the initial φ); the figures above are the equilibrium the optimiser "
-         "followed.\n\n";
-}
-
-std::string SummaryMarkdown(const Json& s) {
-  auto number = [&](const char* key, const char* format) {
-    return Format(format, s.Find(key)->AsNumber());
-  };
-  std::ostringstream md;
-  md << "# ergo_optimize: " << s.Find("scenario")->AsString() << "\n\n"
-     << s.Find("description")->AsString() << "\n\n"
-     << "| | initial | optimised |\n|---|---|---|\n"
-     << "| score φ | " << number("initial_score", "%.4g") << " | "
-     << number("optimized_score", "%.4g") << " |\n"
-     << "| ζ (pressure term) | " << number("initial_zeta", "%.4g") << " | "
-     << number("optimized_zeta", "%.4g") << " |\n"
-     << "| peak pressure (kPa) | "
-     << Format("%.2f", s.Find("initial_peak_pressure_Pa")->AsNumber() / 1e3) << " | "
-     << Format("%.2f", s.Find("optimized_peak_pressure_Pa")->AsNumber() / 1e3) << " |\n"
-     << "| max penetration (mm) | "
-     << Format("%.3f", s.Find("initial_max_penetration_m")->AsNumber() * 1e3) << " | "
-     << Format("%.3f", s.Find("optimized_max_penetration_m")->AsNumber() * 1e3) << " |\n"
-     << "| contact vertices | " << number("initial_contact_vertices", "%.0f") << " | "
-     << number("contact_vertices", "%.0f") << " |\n\n"
-     << "Table 1 columns: reduction " << number("reduction_percent", "%.1f")
-     << " %, smoothing strength γ " << number("gamma", "%.3g") << ", time "
-     << number("wall_s", "%.1f") << " s, " << number("body_vertices", "%.0f") << " body vertices, "
-     << number("support_vertices", "%.0f") << " support vertices, "
-     << number("contact_vertices", "%.0f") << " contact vertices.\n\n"
-     << FreshPlacementLine(s) << "Optimiser " << s.Find("optimizer")->AsString() << ": "
-     << number("evaluations", "%.0f") << " evaluations (" << number("failed_evaluations", "%.0f")
-     << " failed), " << number("newton_iterations", "%.0f")
-     << " Newton iterations; stopped: " << s.Find("stop_reason")->AsString() << ".\n\n"
-     << "Files: support_initial/optimized.{ply,stl} (millimetres; the STL is closed and "
-        "print-ready), "
-        "body_*.vtu and support_*.vtu (pressure_Pa, contact_force_N, displacement_m), history.csv, "
-        "pressure_maps.png, pressure_histograms.png, displacement.png, phi_history.png.\n";
-  return md.str();
+  // An argument vector, never a shell: --out may hold any character.
+  const std::vector<std::string> command = {
+      python, std::string(ERGO_TOOLS_DIR) + "/plot_results.py", dir};
+  const ChildProcessResult plotted = RunChildProcess(command);
+  if (!plotted.ok())
+    std::cerr << "warning: pictures not written: " << CommandLineForDisplay(command) << " "
+              << plotted.Describe() << "\n";
 }
 
 int Run() {
+  ValidateRunFlags();
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
-  if (FLAGS_max_evals < 1)
-    throw InputError("--max_evals", "", "must be at least 1", "e.g. --max_evals=100");
+  StopOnSignals signals;
+  OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
   Scenario scenario = ScenarioFromFlags();
   std::string error;
   std::unique_ptr<Optimizer> optimizer = MakeOptimizer(FLAGS_optimizer, OptimizerOptions(), &error);
-  if (!optimizer)
-    throw InputError("--optimizer", "", "'" + FLAGS_optimizer + "' is unknown", error);
   std::cout << "scenario " << scenario.name << ": " << scenario.description << "\n";
 
   const auto begin = std::chrono::steady_clock::now();
-  ApplyDesignFlags(&scenario);  // exponent, smoothing, Taubin, contact stiffness
-  const DesignOptions& design = scenario.design;
+  ApplyDesignFlags(&scenario);  // exponent, smoothing, Taubin, contact stiffness, placement
   DesignProblem problem = scenario.MakeProblem();
   const Eigen::VectorXd x0 = problem.InitialDesign();
   const double gamma = ApplyGammaFlags(&problem);
-  const DesignReport initial = ReportDesign(problem, x0);
-  if (!initial.evaluation.ok) {
-    std::cerr << "ergo_optimize: the initial equilibrium failed: " << initial.evaluation.message
-              << "\n";
+  // Everything reported is placed afresh; the optimiser's path is `problem`'s own mode.
+  DesignProblem fresh(problem);
+  fresh.set_placement(DesignPlacement::kFresh);
+  fresh.ClearWarmStarts();
+  RunSummary summary;
+  summary.scenario = &scenario;
+  summary.optimizer = FLAGS_optimizer;
+  summary.placement = PlacementName(scenario.design.placement);
+  summary.robust_placements = FLAGS_robust_placements;
+  summary.gamma = gamma;
+  summary.initial = ReportDesign(fresh, x0);
+  if (StopOnSignals::stopped()) {
+    std::cerr << "ergo_optimize: interrupted before any result; nothing written\n";
+    return StopOnSignals::ExitCode();
+  }
+  if (!summary.initial.evaluation.ok) {
+    std::cerr << "ergo_optimize: the initial equilibrium failed: "
+              << summary.initial.evaluation.message << "\n";
     return 1;
   }
-  std::cout << "  initial φ " << initial.evaluation.phi << " (ζ " << initial.evaluation.zeta
-            << ", γψ " << gamma * initial.evaluation.psi << "), "
-            << initial.evaluation.equilibrium.contact_vertices << " contact vertices, peak "
-            << initial.peak_pressure / 1e3 << " kPa, max penetration "
-            << initial.evaluation.equilibrium.max_penetration * 1e3 << " mm\n";
+  const DesignEvaluation& initial = summary.initial.evaluation;
+  const double phi0 = initial.phi;
+  std::cout << "  initial φ " << phi0 << " (ζ " << initial.zeta << ": skin " << initial.zeta_human
+            << ", support " << initial.zeta_support << "; γψ " << gamma * initial.psi << "), "
+            << initial.equilibrium.contact_vertices << " skin vertices in contact, peak "
+            << summary.initial.peak_pressure / 1e3 << " kPa, max penetration "
+            << initial.equilibrium.max_penetration * 1e3 << " mm\n";
 
-  // The optimisation.
+  // The objective, and the score a kept design must earn placed afresh.
+  const std::vector<Placement> robust =
+      RobustPlacements(*scenario.body, FLAGS_robust_placements, 1e-3 * FLAGS_robust_shift_mm);
+  RoundsProblem rounds_problem;
+  rounds_problem.make_objective = [&]() -> std::unique_ptr<Objective> {
+    DesignProblem path(problem);
+    path.ClearWarmStarts();
+    if (robust.size() > 1) return std::make_unique<RobustDesignObjective>(path, robust);
+    return std::make_unique<DesignObjective>(path);
+  };
+  rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
+    const std::vector<DesignEvaluation> placed =
+        EvaluatePlacements(fresh, x, robust, &StopOnSignals::flag());
+    double mean = 0;
+    for (const DesignEvaluation& e : placed) {
+      if (!e.ok) return std::numeric_limits<double>::quiet_NaN();
+      mean += e.phi / static_cast<double>(placed.size());
+    }
+    return mean;
+  };
+  double phi0_objective = phi0;
+  if (robust.size() > 1) {
+    phi0_objective = rounds_problem.fresh_score(x0);
+    std::cout << "objective: mean over " << robust.size() << " placements; at x₀ "
+              << phi0_objective << "\n";
+  }
+
   Budget budget;
   budget.max_evaluations = FLAGS_max_evals;
   budget.max_seconds = FLAGS_max_seconds;
   RunControl control;
-  control.stop = &g_stop;
-  const double phi0 = initial.evaluation.phi;
-  double best = phi0;
+  control.stop = &StopOnSignals::flag();
+  double best = phi0_objective;
   control.progress = [&](const IterationRecord& r) {
     best = std::min(best, r.phi);
     if (FLAGS_progress) {
@@ -210,116 +228,112 @@ int Run() {
                                   std::max(0L, static_cast<long>(FLAGS_max_evals) - r.evaluations));
       if (FLAGS_max_seconds > 0) eta = std::min(eta, std::max(0.0, FLAGS_max_seconds - r.seconds));
       std::printf("iter %4d  φ/φ₀ %.4f  best %.4f  evals %4ld  elapsed %6.1f s  ETA %6.1f s\n",
-                  r.iteration, r.phi / phi0, best / phi0, r.evaluations, r.seconds, eta);
+                  r.iteration, r.phi / phi0_objective, best / phi0_objective, r.evaluations,
+                  r.seconds, eta);
       std::fflush(stdout);
     }
     return true;
   };
-  std::signal(SIGINT, OnInterrupt);
-  DesignObjective objective(problem);
-  OptimizerResult result = optimizer->Minimize(objective, x0, budget, control);
-  std::signal(SIGINT, SIG_DFL);
-  std::cout << result.BriefReport() << "\n";
-  Eigen::VectorXd best_x = result.ok ? result.best_x : x0;
+  RoundsOptions rounds_options;
+  rounds_options.round_evaluations = FLAGS_round_evals;
+  rounds_options.candidates = FLAGS_candidates;
+  const RoundsResult rounds = MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective,
+                                               budget, control, rounds_options);
+  summary.result = rounds.result;
+  summary.interrupted = StopOnSignals::stopped();
+  summary.candidate_phi = rounds.candidate_phi;
+  summary.candidate_fresh_phi = rounds.candidate_fresh_phi;
+  summary.kept_candidate = rounds.kept_candidate;
+  std::cout << FLAGS_optimizer << ": " << rounds.rounds << " round(s), "
+            << rounds.result.evaluations << " evaluations, " << rounds.result.newton_iterations
+            << " Newton iterations; kept design placed afresh: "
+            << rounds.kept_fresh_phi / phi0_objective << " of the start ("
+            << rounds.result.stop_reason << ")\n";
 
-  // The best design on the problem that evaluated it: its warm-start cache holds the
-  // equilibrium the optimiser saw there, so the report reproduces the φ it logged.
-  DesignProblem* best_problem = &problem;
-  if (result.ok && result.best_objective)
-    best_problem = &static_cast<DesignObjective&>(*result.best_objective).problem();
-  DesignReport optimized = ReportDesign(*best_problem, best_x);
-  if (FLAGS_post_smoothing > 0 && optimized.evaluation.ok) {
-    const Eigen::VectorXd smoothed_x = PostSmooth(problem, best_x, FLAGS_post_smoothing);
-    DesignReport smoothed = ReportDesign(*best_problem, smoothed_x);
-    std::cout << "post-smoothing (" << FLAGS_post_smoothing << " Taubin iterations): φ "
-              << optimized.evaluation.phi << " -> "
-              << (smoothed.evaluation.ok ? smoothed.evaluation.phi : NAN)
-              << (smoothed.evaluation.ok && smoothed.evaluation.phi < optimized.evaluation.phi
-                      ? " (kept)"
-                      : " (discarded)")
-              << "\n";
-    if (smoothed.evaluation.ok && smoothed.evaluation.phi < optimized.evaluation.phi)
-      optimized = std::move(smoothed);
+  // The kept design placed afresh (the headline), and on the optimiser's own path.
+  Eigen::VectorXd kept = rounds.kept_x;
+  summary.optimized = ReportDesign(fresh, kept);
+  if (FLAGS_post_smoothing > 0 && summary.optimized.evaluation.ok && !StopOnSignals::stopped()) {
+    const Eigen::VectorXd smoothed_x = PostSmooth(problem, kept, FLAGS_post_smoothing);
+    DesignReport smoothed = ReportDesign(fresh, smoothed_x);
+    const bool better =
+        smoothed.evaluation.ok && smoothed.evaluation.phi < summary.optimized.evaluation.phi;
+    std::ostringstream line;
+    line << "Post-smoothing (" << FLAGS_post_smoothing << " Taubin iterations): φ afresh "
+         << summary.optimized.evaluation.phi << " → "
+         << (smoothed.evaluation.ok ? smoothed.evaluation.phi : NAN)
+         << (better ? " (kept)" : " (discarded)") << ".";
+    summary.post_smoothing = line.str();
+    std::cout << line.str() << "\n";
+    if (better) {
+      kept = smoothed_x;
+      summary.optimized = std::move(smoothed);
+    }
   }
-  if (!optimized.evaluation.ok) optimized = initial;  // nothing better was found that converged
-  // The same design with the body placed on it afresh (from the scenario's start, as a user
-  // would stand on the printed part). Contact with a sculpted support can have several
-  // equilibria; the optimiser followed one continuously, a fresh placement may find another.
-  DesignProblem fresh = scenario.MakeProblem();
-  fresh.set_gamma(gamma);
-  const DesignEvaluation placed = fresh.Evaluate(optimized.x, false);
-  if (placed.ok) {
-    std::cout << "fresh placement on the optimised design: φ/φ₀ " << placed.phi / phi0
-              << " (optimiser's equilibrium " << optimized.evaluation.phi / phi0 << ")\n";
+  if (!summary.optimized.evaluation.ok) {
+    std::cout << "the body placed afresh on the optimised design did not reach equilibrium ("
+              << summary.optimized.evaluation.message << "); keeping the initial design\n";
+    kept = x0;
+    summary.optimized = summary.initial;
+  }
+  if (rounds.kept_path && kept.isApprox(rounds.kept_x, 0.0) && robust.size() == 1) {
+    DesignProblem& path = static_cast<DesignObjective&>(*rounds.kept_path).problem();
+    summary.followed = ReportDesign(path, kept);
+  } else if (rounds.kept_path && kept.isApprox(rounds.kept_x, 0.0)) {
+    DesignProblem& path = static_cast<RobustDesignObjective&>(*rounds.kept_path).problem(0);
+    summary.followed = ReportDesign(path, kept);
   } else {
-    std::cout << "fresh placement on the optimised design failed: " << placed.message << "\n";
+    summary.followed = summary.optimized;
   }
-  // Placement checks: the body landing 3 mm off along each horizontal axis, or tilted 1°.
-  Json checks = Json::Array();
-  for (const Placement& placement :
-       PlacementChecks(*scenario.body, 1e-3 * FLAGS_placement_shift_mm,
-                       FLAGS_placement_tilt_deg * M_PI / 180, /*with_tilts=*/true)) {
-    DesignProblem at_initial = PlacedProblem(fresh, placement);
-    DesignProblem at_optimized = PlacedProblem(fresh, placement);
-    const DesignEvaluation a = at_initial.Evaluate(x0, false);
-    const DesignEvaluation b = at_optimized.Evaluate(optimized.x, false);
-    std::cout << "placement " << placement.name << ": initial φ/φ₀ " << (a.ok ? a.phi / phi0 : NAN)
-              << ", optimised " << (b.ok ? b.phi / phi0 : NAN) << " (reduction "
-              << (a.ok && b.ok ? 100 * (1 - b.phi / a.phi) : NAN) << " %)\n";
-    Json c = Json::Object();
-    c["name"] = placement.name;
-    c["initial_score"] = a.ok ? a.phi : NAN;
-    c["score"] = b.ok ? b.phi : NAN;
-    checks.Append(c);
+
+  // Placement checks: the body landing a few millimetres off, or tilted.
+  if (FLAGS_placement_checks && !StopOnSignals::stopped()) {
+    const std::vector<Placement> placements =
+        PlacementChecks(*scenario.body, 1e-3 * FLAGS_placement_shift_mm,
+                        FLAGS_placement_tilt_deg * M_PI / 180, /*with_tilts=*/true);
+    const std::vector<DesignEvaluation> at_initial =
+        EvaluatePlacements(fresh, x0, placements, &StopOnSignals::flag());
+    const std::vector<DesignEvaluation> at_kept =
+        EvaluatePlacements(fresh, kept, placements, &StopOnSignals::flag());
+    for (size_t i = 0; i < placements.size(); ++i) {
+      PlacementOutcome outcome;
+      outcome.placement = placements[i];
+      outcome.ok = at_initial[i].ok && at_kept[i].ok;
+      outcome.message = !at_initial[i].ok ? "initial: " + at_initial[i].message
+                                          : "optimised: " + at_kept[i].message;
+      outcome.initial_score = at_initial[i].phi;
+      outcome.score = at_kept[i].phi;
+      summary.checks.push_back(outcome);
+      std::cout << "placement " << placements[i].name << ": "
+                << (outcome.ok ? std::to_string(outcome.ReductionPercent()) + " % below the "
+                                                                              "initial design"
+                               : "did not converge (" + outcome.message + ")")
+                << "\n";
+    }
   }
-  const double wall =
+  summary.interrupted = StopOnSignals::stopped();
+  summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 
-  // Outputs.
-  std::filesystem::create_directories(FLAGS_out);
-  const std::filesystem::path out(FLAGS_out);
-  WriteDesignFiles(FLAGS_out, "initial", *scenario.body, initial, scenario.support.vertices);
-  WriteDesignFiles(FLAGS_out, "optimized", *scenario.body, optimized, scenario.support.vertices);
-  WriteHistoryCsv((out / "history.csv").string(), result);
-  Json summary = SummaryJson(scenario, initial, optimized, result, gamma, wall,
-                             design.equilibrium.contact_stiffness);
-  summary["fresh_placement_converged"] = placed.ok;
-  summary["placement_checks"] = checks;
-  auto pose = [](const BodyState& state) {
-    Json p = Json::Array();
-    for (int k = 0; k < 3; ++k) p.Append(state.centre[k]);
-    const Eigen::AngleAxisd angle(state.rotation);
-    for (int k = 0; k < 3; ++k) p.Append(angle.angle() * angle.axis()[k]);
-    return p;
-  };
-  summary["followed_core_pose"] = pose(optimized.evaluation.equilibrium.state);
-  if (placed.ok) {
-    summary["fresh_core_pose"] = pose(placed.equilibrium.state);
-    summary["fresh_placement_score"] = placed.phi;
-    summary["fresh_placement_reduction_percent"] = 100.0 * (1.0 - placed.phi / phi0);
-  }
-  WriteJsonFile((out / "summary.json").string(), summary);
+  // Outputs, into the temporary directory that becomes --out as a whole.
+  const std::filesystem::path out(output.path());
+  const Vertices& initial_support = scenario.support.vertices;
+  WriteDesignFiles(out.string(), "initial", *scenario.body, summary.initial, initial_support);
+  WriteDesignFiles(out.string(), "optimized", *scenario.body, summary.optimized, initial_support);
+  WriteHistoryCsv((out / "history.csv").string(), summary.result);
+  WriteJsonFile((out / "summary.json").string(), SummaryJson(summary));
   const std::string markdown = SummaryMarkdown(summary);
   WriteFileAtomically((out / "summary.md").string(),
                       [&](std::ostream& stream) { stream << markdown; });
-  WriteJsonFile((out / "plot_data.json").string(), PlotData(scenario, initial, optimized), 0);
-  if (FLAGS_plot) {
-    // An argument vector, never a shell: --out may hold any character.
-    const std::string python = FindPythonWithMatplotlib();
-    if (python.empty()) {
-      std::cerr << "warning: pictures not written: no python3 with matplotlib found (Debian: "
-                   "apt-get install python3-matplotlib)\n";
-    } else {
-      const std::vector<std::string> command = {
-          python, std::string(ERGO_TOOLS_DIR) + "/plot_results.py", FLAGS_out};
-      const ChildProcessResult plotted = RunChildProcess(command);
-      if (!plotted.ok())
-        std::cerr << "warning: pictures not written: " << CommandLineForDisplay(command) << " "
-                  << plotted.Describe() << "\n";
-    }
+  WriteJsonFile((out / "plot_data.json").string(),
+                PlotData(scenario, summary.initial, summary.optimized), 0);
+  if (FLAGS_plot && !StopOnSignals::stopped()) Plot(out.string());
+  if (!output.Commit(&error)) {
+    std::cerr << "ergo_optimize: " << error << "\n";
+    return 1;
   }
-  std::cout << markdown << "wrote " << FLAGS_out << "/\n";
-  return 0;
+  std::cout << markdown << "wrote " << output.final_path() << "/\n";
+  return StopOnSignals::stopped() ? StopOnSignals::ExitCode() : 0;
 }
 
 }  // namespace
@@ -331,7 +345,14 @@ int main(int argc, char** argv) {
       "optimise a support's shape for even contact pressure\n"
       "  ergo_optimize [--flagfile=data/SCENARIO.flags] [--optimizer=NAME] [--max_evals=N] "
       "[--max_seconds=S] [--out=DIR]");
+  try {
+    ergo::CheckCommandLine(argc, argv);
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_optimize: " << error.what() << "\n";
+    return 2;
+  }
   gflags::ParseCommandLineFlags(&argc, &argv, true);
+  ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
   try {
     return ergo::Run();

@@ -74,17 +74,23 @@ Json SkinView(const LayeredBody& body, const DesignReport& report, const View& v
 
 }  // namespace
 
-DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
+DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorXd& x,
+                              DesignEvaluation evaluation) {
   DesignReport report;
   report.x = x;
   report.support = problem.SupportAt(x);
-  report.evaluation = problem.Evaluate(x, false);
+  report.evaluation = std::move(evaluation);
   if (!report.evaluation.ok) return report;
   report.pressures = report.evaluation.pressures;
-  report.peak_pressure =
-      ComputePressureStatistics(report.pressures.human.pressure, problem.body().skin().rest_areas)
-          .peak;
+  const PressureStatistics skin =
+      ComputePressureStatistics(report.pressures.human.pressure, problem.body().skin().rest_areas);
+  report.peak_pressure = skin.peak;
+  report.skin_contact_area = skin.contact_area;
   return report;
+}
+
+DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
+  return ReportEvaluation(problem, x, problem.Evaluate(x, false));
 }
 
 void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,

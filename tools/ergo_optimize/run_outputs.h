@@ -22,12 +22,16 @@ struct DesignReport {
   TriMesh support;
   DesignEvaluation evaluation;
   ContactPressures pressures;
-  double peak_pressure = 0;  // human side, Pa
+  double peak_pressure = 0;      // skin side, Pa
+  double skin_contact_area = 0;  // Σ rest areas of skin vertices in contact, m²
 };
 
 // Evaluates `x` on `problem` (φ only) and gathers its pressures. evaluation.ok tells
 // whether the equilibrium converged.
 DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x);
+// The report of an evaluation already made of `x` on `problem`.
+DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorXd& x,
+                              DesignEvaluation evaluation);
 
 // DIR/body_TAG.vtu, DIR/support_TAG.vtu (displacement from `initial_support`),
 // DIR/support_TAG.ply and DIR/support_TAG.stl (binary, millimetres).

@@ -1,0 +1,274 @@
+#include "tools/ergo_optimize/run_summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Geometry>
+
+namespace ergo {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// In-shoe offloading is judged by a peak reduction above 30 % or a peak below 200 kPa (Bus et
+// al. 2011; IWGDF guidance).
+constexpr double kOffloadingRelief = 30, kOffloadingPeak = 2e5;
+
+std::string Format(const char* format, double value) {
+  if (!std::isfinite(value)) return "–";
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, value);
+  return buffer;
+}
+
+double Reduction(double initial, double value) { return 100.0 * (1.0 - value / initial); }
+
+// A value of a report, NaN where the report's equilibrium did not converge.
+double Of(const DesignReport& report, double value) { return report.evaluation.ok ? value : kNaN; }
+
+Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(); }
+
+Json Pose(const DesignReport& report) {
+  if (!report.evaluation.ok) return Json();
+  const BodyState& state = report.evaluation.equilibrium.state;
+  Json pose = Json::Array();
+  for (int k = 0; k < 3; ++k) pose.Append(state.centre[k]);
+  const Eigen::AngleAxisd angle(state.rotation);
+  for (int k = 0; k < 3; ++k) pose.Append(angle.angle() * angle.axis()[k]);
+  return pose;
+}
+
+Json ThreeWay(double initial, double followed, double fresh) {
+  Json out = Json::Object();
+  out["initial"] = Number(initial);
+  out["followed"] = Number(followed);
+  out["fresh"] = Number(fresh);
+  return out;
+}
+
+bool IsShoe(const RunSummary& s) { return s.scenario->name == "shoe"; }
+
+double WorstCheckReduction(const RunSummary& s) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const PlacementOutcome& c : s.checks)
+    worst = std::min(worst, c.ok ? c.ReductionPercent() : -std::numeric_limits<double>::infinity());
+  return s.checks.empty() ? kNaN : worst;
+}
+
+}  // namespace
+
+Json SummaryJson(const RunSummary& s) {
+  const Scenario& scenario = *s.scenario;
+  const DesignEvaluation& initial = s.initial.evaluation;
+  const DesignEvaluation& fresh = s.optimized.evaluation;
+  const DesignEvaluation& followed = s.followed.evaluation;
+  const double phi0 = initial.phi;
+  Json j = Json::Object();
+  j["scenario"] = scenario.name;
+  j["description"] = scenario.description;
+  j["optimizer"] = s.optimizer;
+  j["placement"] = s.placement;
+  j["robust_placements"] = s.robust_placements;
+  // The headline: the body placed afresh on the kept design.
+  j["initial_score"] = phi0;
+  j["optimized_score"] = Number(Of(s.optimized, fresh.phi));
+  j["reduction_percent"] = Number(Of(s.optimized, Reduction(phi0, fresh.phi)));
+  j["fresh_placement_converged"] = fresh.ok;
+  j["followed_score"] = Number(Of(s.followed, followed.phi));
+  j["followed_reduction_percent"] = Number(Of(s.followed, Reduction(phi0, followed.phi)));
+  j["initial_zeta"] = initial.zeta;
+  j["optimized_zeta"] = Number(Of(s.optimized, fresh.zeta));
+  j["followed_zeta"] = Number(Of(s.followed, followed.zeta));
+  // What the person feels: the skin's side of ζ, its contact area, the peak pressure.
+  j["skin_zeta"] = ThreeWay(initial.zeta_human, Of(s.followed, followed.zeta_human),
+                            Of(s.optimized, fresh.zeta_human));
+  j["support_zeta"] = ThreeWay(initial.zeta_support, Of(s.followed, followed.zeta_support),
+                               Of(s.optimized, fresh.zeta_support));
+  j["initial_skin_zeta"] = initial.zeta_human;
+  j["optimized_skin_zeta"] = Number(Of(s.optimized, fresh.zeta_human));
+  j["skin_zeta_reduction_percent"] =
+      Number(Of(s.optimized, Reduction(initial.zeta_human, fresh.zeta_human)));
+  j["skin_contact_area_m2"] = ThreeWay(s.initial.skin_contact_area,
+                                       Of(s.followed, s.followed.skin_contact_area),
+                                       Of(s.optimized, s.optimized.skin_contact_area));
+  j["initial_peak_pressure_Pa"] = s.initial.peak_pressure;
+  j["fresh_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
+  j["optimized_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
+  j["followed_peak_pressure_Pa"] = Number(Of(s.followed, s.followed.peak_pressure));
+  const double relief = Of(s.optimized, Reduction(s.initial.peak_pressure, s.optimized.peak_pressure));
+  j["peak_relief_percent"] = Number(relief);
+  if (IsShoe(s)) {
+    Json offloading = Json::Object();
+    offloading["criterion"] = "peak reduction > 30 % or peak < 200 kPa (Bus et al. 2011, IWGDF)";
+    offloading["peak_reduction_percent"] = Number(relief);
+    offloading["peak_below_200kPa"] = fresh.ok && s.optimized.peak_pressure < kOffloadingPeak;
+    offloading["met"] =
+        fresh.ok && (relief > kOffloadingRelief || s.optimized.peak_pressure < kOffloadingPeak);
+    j["offloading"] = offloading;
+  }
+  // Placement checks.
+  Json checks = Json::Array();
+  for (const PlacementOutcome& c : s.checks) {
+    Json entry = Json::Object();
+    entry["name"] = c.placement.name;
+    entry["dx_m"] = c.placement.shift.x();
+    entry["dz_m"] = c.placement.shift.z();
+    entry["pitch_rad"] = c.placement.tilt.x();
+    entry["tilt_rad"] = Json::Array();
+    for (int k = 0; k < 3; ++k) entry["tilt_rad"].Append(c.placement.tilt[k]);
+    entry["converged"] = c.ok;
+    entry["initial_score"] = Number(c.ok ? c.initial_score : kNaN);
+    entry["score"] = Number(c.ok ? c.score : kNaN);
+    entry["reduction_percent"] = Number(c.ok ? c.ReductionPercent() : kNaN);
+    if (!c.ok) entry["message"] = c.message;
+    checks.Append(entry);
+  }
+  j["placement_checks"] = checks;
+  const double worst = WorstCheckReduction(s);
+  j["worst_placement_reduction_percent"] = Number(worst);
+  j["worst_placement_fraction_of_centred"] =
+      Number(Of(s.optimized, worst / Reduction(phi0, fresh.phi)));
+  // How the problem was posed.
+  const DesignOptions& design = scenario.design;
+  j["gamma"] = s.gamma;
+  j["contact_stiffness_Pa_per_m"] = design.equilibrium.contact_stiffness;
+  j["filter_radius_m"] = design.parameterization == DesignParameterization::kFiltered
+                             ? Json(design.filter_radius)
+                             : Json();
+  j["pressure_smoothing_radius_m"] = design.pressure.smoothing_radius;
+  j["wall_s"] = s.wall_seconds;
+  j["body_vertices"] = static_cast<long>(scenario.body->rest().vertices.rows());
+  j["support_vertices"] = static_cast<long>(scenario.support.vertices.rows());
+  j["contact_vertices"] = fresh.ok ? Json(fresh.equilibrium.contact_vertices) : Json();
+  j["initial_contact_vertices"] = initial.equilibrium.contact_vertices;
+  j["initial_max_penetration_m"] = initial.equilibrium.max_penetration;
+  j["optimized_max_penetration_m"] = Number(Of(s.optimized, fresh.equilibrium.max_penetration));
+  Json pose = Json::Object();
+  pose["initial"] = Pose(s.initial);
+  pose["fresh"] = Pose(s.optimized);
+  pose["followed"] = Pose(s.followed);
+  j["core_pose"] = pose;
+  Json candidates = Json::Array();
+  for (size_t i = 0; i < s.candidate_phi.size(); ++i) {
+    Json c = Json::Object();
+    c["optimizer_score"] = s.candidate_phi[i];
+    c["fresh_score"] = Number(i < s.candidate_fresh_phi.size() ? s.candidate_fresh_phi[i] : kNaN);
+    candidates.Append(c);
+  }
+  j["candidates"] = candidates;
+  j["kept_candidate"] = s.kept_candidate;
+  j["evaluations"] = s.result.evaluations;
+  j["failed_evaluations"] = s.result.failed_evaluations;
+  j["newton_iterations"] = s.result.newton_iterations;
+  j["stop_reason"] = s.result.stop_reason;
+  j["interrupted"] = s.interrupted;
+  j["load_N"] = scenario.body->TotalLoad().norm();
+  return j;
+}
+
+std::string SummaryMarkdown(const RunSummary& s) {
+  const DesignEvaluation& initial = s.initial.evaluation;
+  const DesignEvaluation& fresh = s.optimized.evaluation;
+  const DesignEvaluation& followed = s.followed.evaluation;
+  const double phi0 = initial.phi;
+  auto triple = [&](const char* row, const char* format, double scale, double a, double b,
+                    double c) {
+    return std::string("| ") + row + " | " + Format(format, a * scale) + " | " +
+           Format(format, b * scale) + " | " + Format(format, c * scale) + " |\n";
+  };
+  std::ostringstream md;
+  md << "# ergo_optimize: " << s.scenario->name << "\n\n" << s.scenario->description << "\n\n";
+  if (fresh.ok) {
+    md << "**Placed afresh on the optimised design, the body scores φ "
+       << Format("%.4g", fresh.phi) << ", " << Format("%.1f", Reduction(phi0, fresh.phi))
+       << " % below the initial design**";
+    if (followed.ok)
+      md << " (on the path the optimiser followed: " << Format("%.1f", Reduction(phi0, followed.phi))
+         << " %)";
+    md << ". The skin's side of the score, what the person feels, falls "
+       << Format("%.1f", Reduction(initial.zeta_human, fresh.zeta_human)) << " %; the peak skin "
+       << "pressure goes from " << Format("%.1f", s.initial.peak_pressure / 1e3) << " to "
+       << Format("%.1f", s.optimized.peak_pressure / 1e3) << " kPa ("
+       << Format("%.1f", Reduction(s.initial.peak_pressure, s.optimized.peak_pressure))
+       << " % relief).\n\n";
+  } else {
+    md << "**The body placed afresh on the optimised design did not reach equilibrium: "
+       << fresh.message << "**\n\n";
+  }
+  md << "| | initial | optimised, placed afresh | optimised, optimiser's path |\n|---|---|---|---|\n"
+     << triple("score φ", "%.4g", 1, phi0, Of(s.optimized, fresh.phi), Of(s.followed, followed.phi))
+     << triple("ζ (pressure term)", "%.4g", 1, initial.zeta, Of(s.optimized, fresh.zeta),
+               Of(s.followed, followed.zeta))
+     << triple("ζ, skin side", "%.4g", 1, initial.zeta_human, Of(s.optimized, fresh.zeta_human),
+               Of(s.followed, followed.zeta_human))
+     << triple("ζ, support side", "%.4g", 1, initial.zeta_support,
+               Of(s.optimized, fresh.zeta_support), Of(s.followed, followed.zeta_support))
+     << triple("peak skin pressure (kPa)", "%.1f", 1e-3, s.initial.peak_pressure,
+               Of(s.optimized, s.optimized.peak_pressure), Of(s.followed, s.followed.peak_pressure))
+     << triple("skin contact area (cm²)", "%.1f", 1e4, s.initial.skin_contact_area,
+               Of(s.optimized, s.optimized.skin_contact_area),
+               Of(s.followed, s.followed.skin_contact_area))
+     << triple("max penetration (mm)", "%.3f", 1e3, initial.equilibrium.max_penetration,
+               Of(s.optimized, fresh.equilibrium.max_penetration),
+               Of(s.followed, followed.equilibrium.max_penetration))
+     << triple("skin vertices in contact", "%.0f", 1, initial.equilibrium.contact_vertices,
+               Of(s.optimized, fresh.equilibrium.contact_vertices),
+               Of(s.followed, followed.equilibrium.contact_vertices))
+     << "\n";
+  if (IsShoe(s) && fresh.ok) {
+    const double relief = Reduction(s.initial.peak_pressure, s.optimized.peak_pressure);
+    const bool met = relief > kOffloadingRelief || s.optimized.peak_pressure < kOffloadingPeak;
+    md << "Clinical reading (in-shoe offloading: peak reduction > 30 % or peak < 200 kPa, Bus et "
+          "al. 2011): "
+       << (met ? "met" : "not met") << " — peak " << Format("%.1f", s.optimized.peak_pressure / 1e3)
+       << " kPa, " << Format("%.1f", relief) << " % below the flat sole.\n\n";
+  }
+  if (!s.checks.empty()) {
+    md << "Placement checks (the body placed afresh off the pose the optimiser saw; reduction "
+          "against the initial design at the same placement):\n\n"
+          "| placement | initial φ | optimised φ | reduction |\n|---|---|---|---|\n";
+    for (const PlacementOutcome& c : s.checks) {
+      md << "| " << c.placement.name << " | " << (c.ok ? Format("%.4g", c.initial_score) : "–")
+         << " | " << (c.ok ? Format("%.4g", c.score) : "–") << " | "
+         << (c.ok ? Format("%.1f", c.ReductionPercent()) + " %" : "did not converge") << " |\n";
+    }
+    md << "\nWorst placement: " << Format("%.1f", WorstCheckReduction(s)) << " % (centred "
+       << Format("%.1f", Of(s.optimized, Reduction(phi0, fresh.phi))) << " %).\n\n";
+  }
+  const DesignOptions& design = s.scenario->design;
+  md << "Table 1 columns: reduction " << Format("%.1f", Of(s.optimized, Reduction(phi0, fresh.phi)))
+     << " % (afresh), smoothing strength γ " << Format("%.3g", s.gamma) << ", time "
+     << Format("%.1f", s.wall_seconds) << " s, " << s.scenario->body->rest().vertices.rows()
+     << " body vertices, " << s.scenario->support.vertices.rows() << " support vertices.\n\n"
+     << "Contact stiffness κ " << Format("%.3g", design.equilibrium.contact_stiffness)
+     << " Pa/m; design filter radius "
+     << (design.parameterization == DesignParameterization::kFiltered
+             ? Format("%.1f", design.filter_radius * 1e3) + " mm"
+             : std::string("none (raw vertices)"))
+     << "; pressure smoothing "
+     << (design.pressure.smoothing_radius > 0
+             ? "radius " + Format("%.1f", design.pressure.smoothing_radius * 1e3) + " mm"
+             : std::string("umbrella"))
+     << "; evaluations placed " << s.placement
+     << (s.robust_placements > 1 ? ", objective averaged over " +
+                                       std::to_string(s.robust_placements) + " placements"
+                                 : std::string())
+     << ".\n\n";
+  if (!s.candidate_phi.empty()) {
+    md << "Kept design: the best of " << s.candidate_phi.size()
+       << " candidates placed afresh (candidate " << s.kept_candidate + 1 << ").\n\n";
+  }
+  if (!s.post_smoothing.empty()) md << s.post_smoothing << "\n\n";
+  md << "Optimiser " << s.optimizer << ": " << s.result.evaluations << " evaluations ("
+     << s.result.failed_evaluations << " failed), " << s.result.newton_iterations
+     << " Newton iterations; stopped: " << s.result.stop_reason << ".\n\n"
+     << "Files: support_initial/optimized.{ply,stl} (millimetres; the STL is closed and "
+        "print-ready), body_*.vtu and support_*.vtu (pressure_Pa, contact_force_N, "
+        "displacement_m; the optimised ones placed afresh), history.csv, pressure_maps.png, "
+        "pressure_histograms.png, displacement.png, phi_history.png.\n";
+  return md.str();
+}
+
+}  // namespace ergo
