@@ -10,10 +10,15 @@
 // at the round's start design; the round's best few designs are then placed afresh, and the
 // best of those starts the next round and is the design kept. No gain survives that a fresh
 // placement does not confirm, and the path cannot drift for longer than a round.
+//
+// A round depends only on the design it starts from and the budget left, so the state
+// between rounds (RoundsState) is a checkpoint: a run resumed from it ends exactly where the
+// uninterrupted run would (evaluation budgets; a wall-clock budget is not reproducible).
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,9 +28,30 @@
 
 namespace ergo {
 
+// Everything a run in rounds carries from one round to the next.
+struct RoundsState {
+  Eigen::VectorXd kept_x;        // the design kept so far (x₀ at the start)
+  double kept_fresh_phi = 0;     // its score placed afresh
+  double kept_followed_phi = 0;  // the optimiser's own value there (φ₀ at the start)
+  long evaluations = 0;          // spent, fresh checks included
+  long newton_iterations = 0;
+  long failed_evaluations = 0;
+  int rounds = 0;
+  int next_iteration = 0;  // the history's next iteration number
+  double seconds = 0;      // wall time spent
+  std::vector<IterationRecord> history;
+  // The fresh checks of the round that gave the kept design (else of the first round).
+  std::vector<double> candidate_phi, candidate_fresh_phi;
+  int kept_candidate = -1;  // index into them, -1: nothing beat the start
+  bool finished = false;    // the run ended (with `stop_reason`); nothing to resume
+  std::string stop_reason;
+};
+
 struct RoundsOptions {
   int round_evaluations = 0;  // evaluations per round; 0: one round with the whole budget
   int candidates = 3;         // a round's best designs placed afresh after it
+  // Called after every round with the state a resumed run would start from (a checkpoint).
+  std::function<void(const RoundsState&)> on_round;
 };
 
 // What the driver needs from the design problem.
@@ -43,19 +69,20 @@ struct RoundsResult {
   double kept_fresh_phi = 0;
   double kept_followed_phi = 0;  // the optimiser's own value there (its path), or φ₀
   // The round's objective as it stood at its best design (its path's equilibria): where the
-  // kept design can be evaluated on the optimiser's path. Null if x₀ was kept.
+  // kept design can be evaluated on the optimiser's path. Null if x₀ was kept or the kept
+  // design came from a round run before a resume.
   std::shared_ptr<Objective> kept_path;
-  // The designs checked after the last round that produced candidates: the optimiser's
-  // values and the fresh ones, and which was kept (-1: none beat the start).
-  std::vector<double> candidate_phi, candidate_fresh_phi;
+  std::vector<double> candidate_phi, candidate_fresh_phi;  // as RoundsState
   int kept_candidate = -1;
   int rounds = 0;
 };
 
 // Runs `optimizer` from x0 (fresh score phi0_fresh) in rounds within `budget`; control's
-// stop flag and progress callback apply throughout (history iterations run on across rounds).
+// stop flag and progress callback apply throughout (history iterations run on across
+// rounds). With `resume`, continues from that state instead (x0 and phi0_fresh unused).
 RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem,
                               const Eigen::VectorXd& x0, double phi0_fresh, const Budget& budget,
-                              const RunControl& control, const RoundsOptions& options);
+                              const RunControl& control, const RoundsOptions& options,
+                              const RoundsState* resume = nullptr);
 
 }  // namespace ergo

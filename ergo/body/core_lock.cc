@@ -31,6 +31,11 @@ std::string CoreLock::ToString() const {
 }
 
 void ValidateCoreLock(const CoreLock& lock, const std::string& source) {
+  if (lock.locked[0] && lock.locked[1] && lock.locked[2]) {
+    throw InputError(source, "", "every translation of the core is locked (" + lock.ToString() + ")",
+                     "free the translation along the load (e.g. --lock=tx,tz for a load along "
+                     "-y): a body that cannot move cannot settle onto the support");
+  }
   const int locked_rotations = lock.locked[3] + lock.locked[4] + lock.locked[5];
   if (locked_rotations == 1) {
     throw InputError(source, "", "exactly one rotation axis is locked (" + lock.ToString() + ")",

@@ -27,7 +27,8 @@ struct CoreLock {
 // axes generate every rotation (their commutator), so lock 0, 2 or 3 rotation axes.
 CoreLock ParseCoreLock(const std::string& text, const std::string& source = "--lock");
 
-// Throws InputError when the lock is not supported (exactly one rotation axis locked).
+// Throws InputError when the lock is not supported: exactly one rotation axis locked, or all
+// three translations (nothing could carry the body onto the support).
 void ValidateCoreLock(const CoreLock& lock, const std::string& source);
 
 }  // namespace ergo

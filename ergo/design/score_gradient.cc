@@ -111,6 +111,49 @@ SupportShapeGradient ResidualShapeContraction(const SurfaceContacts& contacts,
   return out;
 }
 
+Vertices ResidualShapeDerivative(const SurfaceContacts& contacts, const LayeredBody& body,
+                                 const TriMesh& support, const Vertices& support_velocity) {
+  const Skin& skin = body.skin();
+  Vertices out = Vertices::Zero(body.rest().vertices.rows(), 3);
+  // The rate of each support vertex's barycentric area.
+  Eigen::VectorXd area_rate = Eigen::VectorXd::Zero(support.vertices.rows());
+  if (contacts.support_springs && !contacts.support.contacts.empty()) {
+    for (Eigen::Index t = 0; t < support.triangles.rows(); ++t) {
+      const Eigen::RowVector3i tri = support.triangles.row(t);
+      const Eigen::Matrix3d gradient =
+          TriangleAreaGradient(support.vertices.row(tri[0]), support.vertices.row(tri[1]),
+                               support.vertices.row(tri[2]));
+      double rate = 0;
+      for (int k = 0; k < 3; ++k) rate += gradient.row(k).dot(support_velocity.row(tri[k]));
+      for (int k = 0; k < 3; ++k) area_rate[tri[k]] += rate / 3;
+    }
+  }
+  const Eigen::VectorXd areas = BarycentricVertexAreas(support);
+  for (int side = 0; side < 2; ++side) {
+    const bool point_on_body = side == 0;
+    if (!point_on_body && !contacts.support_springs) break;  // score-only: not in G
+    for (const Contact& contact : (point_on_body ? contacts.skin : contacts.support).contacts) {
+      Variable variables[4];
+      const int n = SpringVariables(contact, point_on_body, skin, variables);
+      Eigen::Matrix<double, 12, 1> velocity = Eigen::Matrix<double, 12, 1>::Zero();
+      for (int b = 0; b < n; ++b)
+        if (!variables[b].on_body)
+          velocity.segment<3>(3 * b) = support_velocity.row(variables[b].vertex).transpose();
+      const Eigen::Matrix<double, 12, 1> change = contact.spring.hessian * velocity;
+      const double stiffness_rate =
+          point_on_body || areas[contact.point] <= 0 ? 0.0
+                                                     : area_rate[contact.point] / areas[contact.point];
+      for (int a = 0; a < n; ++a) {
+        if (!variables[a].on_body) continue;
+        out.row(variables[a].vertex) +=
+            (change.segment<3>(3 * a) + stiffness_rate * contact.spring.gradient.segment<3>(3 * a))
+                .transpose();
+      }
+    }
+  }
+  return out;
+}
+
 Vertices ChainSupportAreas(const Eigen::VectorXd& area_weight, const TriMesh& support) {
   CHECK_EQ(area_weight.size(), support.vertices.rows());
   Vertices out = Vertices::Zero(support.vertices.rows(), 3);

@@ -48,6 +48,13 @@ SupportShapeGradient ResidualShapeContraction(const SurfaceContacts& contacts,
                                               const Eigen::VectorXd& support_areas,
                                               const Vertices& body_velocity);
 
+// (∂G/∂x)·δx in vertex space: how the contact forces on the body's vertices change when the
+// support's vertices move by `support_velocity` (#S x 3) at fixed body state — the forward
+// product of the contraction above (through the springs' cross blocks and the support
+// springs' area-dependent stiffness). #V x 3; the caller reduces it to y.
+Vertices ResidualShapeDerivative(const SurfaceContacts& contacts, const LayeredBody& body,
+                                 const TriMesh& support, const Vertices& support_velocity);
+
 // Σ_j w_j ∂s_j/∂x for barycentric vertex areas s_j of `support`: #S x 3.
 Vertices ChainSupportAreas(const Eigen::VectorXd& area_weight, const TriMesh& support);
 

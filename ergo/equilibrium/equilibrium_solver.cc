@@ -43,6 +43,8 @@ const char* EquilibriumStatusName(EquilibriumStatus status) {
       return "no contact";
     case EquilibriumStatus::kUnconstrained:
       return "unconstrained core DOF";
+    case EquilibriumStatus::kInterrupted:
+      return "interrupted";
   }
   return "unknown";
 }
@@ -165,6 +167,8 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     return result;
   };
   for (int iteration = 0;; ++iteration) {
+    if (options_.stop && options_.stop->load())
+      return finish(EquilibriumStatus::kInterrupted, "interrupted");
     const HessianKind first_kind =
         options_.exact_newton_first ? HessianKind::kExact : HessianKind::kProjectedPsd;
     potential_.Evaluate(state, support, first_kind, true, &hints_, &e);

@@ -16,6 +16,7 @@
 //   if (!result.converged) LOG(ERROR) << result.BriefReport();
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -57,6 +58,8 @@ struct EquilibriumOptions {
   int max_pcg_iterations = 12;
   // Called after every Newton iteration (iteration, residual N, step η, contacts).
   std::function<void(int, double, double, int)> progress;
+  // If set, checked before every Newton iteration: true ends the solve (kInterrupted).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 enum class EquilibriumStatus {
@@ -66,6 +69,7 @@ enum class EquilibriumStatus {
   kNonFinite,          // NaN or Inf in the energy, residual or step
   kNoContact,          // the body fell past the support without touching it
   kUnconstrained,      // a free core DOF meets no resistance (e.g. sliding on a plane)
+  kInterrupted,        // EquilibriumOptions::stop was set
 };
 
 const char* EquilibriumStatusName(EquilibriumStatus status);

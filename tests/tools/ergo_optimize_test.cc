@@ -1,6 +1,9 @@
-// ergo_optimize end to end: a small budget lowers φ by at least 20 % and writes every
-// listed output with valid contents; SIGINT mid-run still leaves complete outputs for the
-// best design so far.
+// ergo_optimize end to end: a small budget lowers the score of the body placed afresh and
+// writes every listed output with the summary's headline keys; SIGINT and SIGTERM leave
+// complete outputs for the best design so far (exit 130 / 143); SIGKILL leaves the previous
+// complete output or none, never a mixture, and the next run clears its temporaries; a run
+// killed mid-way and resumed from its checkpoint ends bit for bit where an uninterrupted one
+// ends.
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -11,10 +14,12 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/mesh_check.h"
 #include "tests/support/test_paths.h"
+#include "tools/common/child_process.h"
 
 namespace ergo {
 namespace {
@@ -22,36 +27,27 @@ namespace {
 namespace fs = std::filesystem;
 
 // The scenario the end-to-end test runs (the issue: the quick shoe sole).
-constexpr char kScenarioFlags[] = "--flagfile=" ERGO_SOURCE_DIR "/data/shoe.flags";
+const std::string kShoe = "--flagfile=" + testing::SourcePath("data/shoe.flags");
 
-bool MatplotlibAvailable() {
-  return std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0 ||
-         std::system("python3 -c 'import matplotlib' > /dev/null 2>&1") == 0;
+bool MatplotlibAvailable() { return !FindPythonWithMatplotlib().empty(); }
+
+std::string Read(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-// The tool is reparented once its shell exits; where nothing reaps it, it lingers as a zombie.
-bool IsZombie(int pid) {
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string text;
-  std::getline(stat, text);
-  const size_t paren = text.rfind(')');
-  return paren != std::string::npos && paren + 2 < text.size() && text[paren + 2] == 'Z';
-}
-
-int RunTool(const std::string& arguments, std::string* output) {
-  FILE* pipe =
-      popen(("timeout 900 " ERGO_BIN_DIR "/ergo_optimize " + arguments + " 2>&1").c_str(), "r");
-  char buffer[4096];
-  while (fgets(buffer, sizeof(buffer), pipe)) *output += buffer;
-  const int status = pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+ChildProcessResult RunTool(std::vector<std::string> arguments, const std::string& log) {
+  arguments.insert(arguments.begin(), std::string(ERGO_BIN_DIR) + "/ergo_optimize");
+  ChildOptions options;
+  options.output = log;
+  return RunChildProcess(arguments, options);
 }
 
 void ExpectCompleteOutputs(const std::string& dir, bool pictures) {
   for (const char* file :
        {"summary.md", "summary.json", "history.csv", "support_initial.ply", "support_initial.stl",
         "support_optimized.ply", "support_optimized.stl", "body_initial.vtu", "body_optimized.vtu",
-        "support_initial.vtu", "support_optimized.vtu"}) {
+        "support_initial.vtu", "support_optimized.vtu", "plot_data.json"}) {
     EXPECT_TRUE(fs::exists(dir + "/" + file)) << file;
   }
   // The print-ready STL is closed, manifold and free of self-intersections, in millimetres.
@@ -62,8 +58,7 @@ void ExpectCompleteOutputs(const std::string& dir, bool pictures) {
   EXPECT_EQ(stl.ExitCode(), 0) << stl.FullReport();
   // VTU files are complete XML documents.
   for (const char* file : {"body_optimized.vtu", "support_optimized.vtu"}) {
-    std::ifstream in(dir + "/" + file);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = Read(dir + "/" + file);
     EXPECT_EQ(text.rfind("<?xml", 0), 0u) << file;
     EXPECT_NE(text.find("</VTKFile>"), std::string::npos) << file;
     EXPECT_NE(text.find("pressure_Pa"), std::string::npos) << file;
@@ -78,60 +73,154 @@ void ExpectCompleteOutputs(const std::string& dir, bool pictures) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
-TEST(ToolsOptimize, QuickShoeLowersTheScoreAndWritesEveryOutput) {
-  const std::string dir = testing::MakeScratchDir("optimize");
-  std::string output;
-  ASSERT_EQ(RunTool(std::string(kScenarioFlags) + " --max_evals=40 --out=" + dir, &output), 0)
-      << output;
+TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
+  const std::string dir = testing::MakeScratchDir("optimize") + "/out";
+  const ChildProcessResult run =
+      RunTool({kShoe, "--max_evals=30", "--robust_placements=1", "--out=" + dir}, dir + ".log");
+  ASSERT_TRUE(run.ok()) << run.Describe() << "\n" << Read(dir + ".log");
   const Json summary = ReadJsonFile(dir + "/summary.json");
   for (const char* key :
-       {"initial_score", "optimized_score", "reduction_percent", "gamma", "wall_s", "body_vertices",
-        "support_vertices", "contact_vertices", "initial_max_penetration_m",
-        "optimized_max_penetration_m", "initial_peak_pressure_Pa", "optimized_peak_pressure_Pa",
-        "fresh_placement_converged", "evaluations", "stop_reason"}) {
+       {"initial_score", "optimized_score", "reduction_percent", "followed_score",
+        "followed_reduction_percent", "fresh_placement_converged", "placement_checks",
+        "worst_placement_reduction_percent", "skin_zeta", "skin_zeta_reduction_percent",
+        "skin_contact_area_m2", "fresh_peak_pressure_Pa", "peak_relief_percent", "offloading",
+        "contact_stiffness_Pa_per_m", "filter_radius_m", "gamma", "wall_s", "body_vertices",
+        "support_vertices", "evaluations", "stop_reason", "candidates"}) {
     EXPECT_NE(summary.Find(key), nullptr) << key;
   }
-  EXPECT_GE(GetNumber(summary, "reduction_percent", "summary"), 20.0) << output;
+  // The headline is the body placed afresh: the kept design must beat the flat sole there.
+  EXPECT_TRUE(GetBool(summary, "fresh_placement_converged", "summary"));
+  EXPECT_GE(GetNumber(summary, "reduction_percent", "summary"), 20.0) << Read(dir + ".log");
   EXPECT_LT(GetNumber(summary, "optimized_score", "summary"),
             GetNumber(summary, "initial_score", "summary"));
-  EXPECT_LE(GetNumber(summary, "evaluations", "summary"), 40.0);
+  EXPECT_LE(GetNumber(summary, "evaluations", "summary"), 30.0);
+  // Shoe checks: ±3 mm along both horizontal axes and ±1° of pitch, each with a verdict.
+  const Json& checks = GetMember(summary, "placement_checks", "summary");
+  EXPECT_EQ(checks.size(), 6u);
+  for (size_t i = 0; i < checks.size(); ++i) {
+    EXPECT_TRUE(GetBool(checks[i], "converged", "check"));
+    EXPECT_NE(checks[i].Find("reduction_percent"), nullptr);
+  }
+  const Json& skin = GetMember(summary, "skin_zeta", "summary");
+  EXPECT_LT(GetNumber(skin, "fresh", "skin_zeta"), GetNumber(skin, "initial", "skin_zeta"));
   ExpectCompleteOutputs(dir, MatplotlibAvailable());
-  fs::remove_all(dir);
+  fs::remove_all(fs::path(dir).parent_path());
 }
 
-TEST(ToolsOptimize, InterruptLeavesCompleteOutputsForTheBestDesign) {
-  const std::string dir = testing::MakeScratchDir("interrupt");
-  const std::string log = dir + ".log";
-  // Start in the background; send SIGINT once the optimisation has made progress.
-  const std::string command = std::string(ERGO_BIN_DIR) + "/ergo_optimize " + kScenarioFlags +
-                              " --max_evals=100000 --plot=false --out=" + dir + " > " + log +
-                              " 2>&1 & echo $!";
-  FILE* pipe = popen(command.c_str(), "r");
-  int pid = 0;
-  ASSERT_EQ(fscanf(pipe, "%d", &pid), 1);
-  pclose(pipe);
-  bool started = false;
-  for (int wait = 0; wait < 600 && !started; ++wait) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    std::ifstream in(log);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    started = text.find("iter    2") != std::string::npos;
+// Starts ergo_optimize in the background and returns its pid; `log` collects its output.
+pid_t Start(const std::vector<std::string>& arguments, const std::string& log) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<std::string> argv = {std::string(ERGO_BIN_DIR) + "/ergo_optimize"};
+    argv.insert(argv.end(), arguments.begin(), arguments.end());
+    std::vector<char*> args;
+    for (std::string& a : argv) args.push_back(a.data());
+    args.push_back(nullptr);
+    std::freopen(log.c_str(), "w", stdout);
+    dup2(fileno(stdout), STDERR_FILENO);
+    execv(args[0], args.data());
+    _exit(127);
   }
-  ASSERT_TRUE(started) << "the run did not reach iteration 2";
-  ASSERT_EQ(kill(pid, SIGINT), 0);
-  bool exited = false;
-  for (int wait = 0; wait < 600 && !exited; ++wait) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    exited = kill(pid, 0) != 0 || IsZombie(pid);
+  return pid;
+}
+
+// Waits until `log` holds `text` (or the process ended); false on a timeout of `seconds`.
+bool WaitFor(pid_t pid, const std::string& log, const std::string& text, double seconds) {
+  const auto begin = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() <
+         seconds) {
+    if (Read(log).find(text) != std::string::npos) return true;
+    if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
-  ASSERT_TRUE(exited) << "ergo_optimize did not stop after SIGINT";
+  return false;
+}
+
+int WaitForExit(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+class ToolsOptimizeSignals : public ::testing::TestWithParam<int> {};
+
+TEST_P(ToolsOptimizeSignals, AStopSignalLeavesCompleteOutputsForTheBestDesign) {
+  const int signal = GetParam();
+  const std::string dir = testing::MakeScratchDir("signal") + "/out";
+  const pid_t pid = Start({kShoe, "--max_evals=100000", "--robust_placements=1", "--plot=false",
+                           "--placement_checks=false", "--out=" + dir},
+                          dir + ".log");
+  ASSERT_TRUE(WaitFor(pid, dir + ".log", "iter    2", 600)) << Read(dir + ".log");
+  ASSERT_EQ(kill(pid, signal), 0);
+  EXPECT_EQ(WaitForExit(pid), 128 + signal) << Read(dir + ".log");
   ExpectCompleteOutputs(dir, false);
   const Json summary = ReadJsonFile(dir + "/summary.json");
+  EXPECT_TRUE(GetBool(summary, "interrupted", "summary"));
   EXPECT_NE(GetString(summary, "stop_reason", "summary").find("interrupt"), std::string::npos);
   EXPECT_LE(GetNumber(summary, "optimized_score", "summary"),
             GetNumber(summary, "initial_score", "summary"));
-  fs::remove_all(dir);
-  fs::remove(log);
+  fs::remove_all(fs::path(dir).parent_path());
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, ToolsOptimizeSignals, ::testing::Values(SIGINT, SIGTERM),
+                         [](const auto& info) { return info.param == SIGINT ? "sigint" : "sigterm"; });
+
+// The bump scene: 40 evaluations in rounds of 8 take about ten seconds and checkpoint after
+// every round.
+std::vector<std::string> BumpRun(const std::string& out) {
+  return {"--scenario=bump", "--bump_edge_length=0.01", "--max_evals=40", "--round_evals=8",
+          "--candidates=2",  "--plot=false",            "--placement_checks=false",
+          "--progress=true", "--out=" + out};
+}
+
+TEST(ToolsOptimize, AKilledRunLeavesThePreviousOutputOrNoneAndResumesToTheSameDesign) {
+  const std::string scratch = testing::MakeScratchDir("resume");
+  // The uninterrupted run.
+  const std::string whole = scratch + "/whole";
+  ASSERT_TRUE(RunTool(BumpRun(whole), whole + ".log").ok()) << Read(whole + ".log");
+  const Json reference = ReadJsonFile(whole + "/summary.json");
+
+  // A previous complete output in place, then a run into the same directory killed after
+  // its first checkpoint.
+  const std::string dir = scratch + "/killed";
+  ASSERT_TRUE(RunTool({"--scenario=bump", "--bump_edge_length=0.01", "--max_evals=3",
+                       "--plot=false", "--placement_checks=false", "--out=" + dir},
+                      dir + ".first.log")
+                  .ok());
+  const std::string previous = Read(dir + "/summary.json");
+  const pid_t pid = Start(BumpRun(dir), dir + ".log");
+  bool checkpointed = false;
+  for (int wait = 0; wait < 1200 && !checkpointed; ++wait) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    checkpointed = fs::exists(dir + ".checkpoint.json");
+  }
+  ASSERT_TRUE(checkpointed) << Read(dir + ".log");
+  ASSERT_EQ(waitpid(pid, nullptr, WNOHANG), 0) << "the run ended before it could be killed";
+  kill(pid, SIGKILL);
+  WaitForExit(pid);
+  // Either the previous complete output or none: here the previous one, untouched.
+  ASSERT_TRUE(fs::exists(dir + "/summary.json"));
+  EXPECT_TRUE(Read(dir + "/summary.json") == previous) << "the previous output was changed";
+  bool temporary = false;
+  for (const auto& entry : fs::directory_iterator(scratch))
+    temporary |= entry.path().filename().string().find("killed.tmp-") != std::string::npos;
+  EXPECT_TRUE(temporary) << "the killed run's temporary directory should be left to clean";
+
+  // Resumed: the same design and score as the uninterrupted run, bit for bit.
+  ASSERT_TRUE(RunTool({"--resume=" + dir}, dir + ".resume.log").ok()) << Read(dir + ".resume.log");
+  EXPECT_NE(Read(dir + ".resume.log").find("resuming after round"), std::string::npos);
+  const Json resumed = ReadJsonFile(dir + "/summary.json");
+  EXPECT_EQ(GetNumber(resumed, "optimized_score", "resumed"),
+            GetNumber(reference, "optimized_score", "reference"));
+  EXPECT_EQ(GetNumber(resumed, "evaluations", "resumed"),
+            GetNumber(reference, "evaluations", "reference"));
+  EXPECT_TRUE(Read(dir + "/support_optimized.ply") == Read(whole + "/support_optimized.ply"))
+      << "the resumed design differs from the uninterrupted one";
+  // The resumed run cleared the stale temporary and, complete, its checkpoint.
+  for (const auto& entry : fs::directory_iterator(scratch))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+  EXPECT_FALSE(fs::exists(dir + ".checkpoint.json"));
+  fs::remove_all(scratch);
 }
 
 }  // namespace

@@ -20,6 +20,13 @@ std::string ChildProcessResult::Describe() const {
 }
 
 ChildProcessResult RunChildProcess(const std::vector<std::string>& argv, bool quiet) {
+  ChildOptions options;
+  options.quiet = quiet;
+  return RunChildProcess(argv, options);
+}
+
+ChildProcessResult RunChildProcess(const std::vector<std::string>& argv,
+                                   const ChildOptions& options) {
   ChildProcessResult result;
   if (argv.empty() || argv[0].empty()) {
     result.error = "no program given";
@@ -32,10 +39,16 @@ ChildProcessResult RunChildProcess(const std::vector<std::string>& argv, bool qu
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (quiet) {
+  if (options.quiet) {
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  } else if (!options.output.empty()) {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, options.output.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   }
+  if (!options.working_directory.empty())
+    posix_spawn_file_actions_addchdir_np(&actions, options.working_directory.c_str());
   pid_t pid = 0;
   const int spawned = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);

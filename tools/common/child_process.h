@@ -19,8 +19,17 @@ struct ChildProcessResult {
   std::string Describe() const;
 };
 
+struct ChildOptions {
+  bool quiet = false;             // stdout and stderr to /dev/null
+  std::string output;             // else, if set: stdout and stderr into this file
+  std::string working_directory;  // if set: the child starts there
+};
+
 // Runs argv[0] (looked up on PATH when it holds no '/') with exactly these arguments, waits
-// for it and returns how it ended. quiet: its stdout and stderr go to /dev/null.
+// for it and returns how it ended.
+ChildProcessResult RunChildProcess(const std::vector<std::string>& argv,
+                                   const ChildOptions& options);
+// The same, `quiet` sending its stdout and stderr to /dev/null.
 ChildProcessResult RunChildProcess(const std::vector<std::string>& argv, bool quiet = false);
 
 // The command line as a user would type it, each argument single-quoted where needed: for

@@ -10,6 +10,7 @@
 #include "ergo/equilibrium/calibrate_contact_stiffness.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/input_error.h"
+#include "tools/common/flag_checks.h"
 
 DEFINE_int32(exponent, 3, "pressure exponent e of ζ = Σ s P̄^e (2, 3 or 4)");
 DEFINE_double(pressure_smoothing, 1.0, "λ_p of P̄ = (I − λ_p L) P, in [0, 1] (1 = the paper)");
@@ -51,6 +52,12 @@ double ParseNonNegative(const std::string& text, const std::string& flag) {
 
 void ApplyDesignFlags(Scenario* scenario) {
   DesignOptions& design = scenario->design;
+  RequireInRange("gamma_power", static_cast<long>(FLAGS_gamma_power), -30, 30, "e.g. -1");
+  RequireInRange("taubin_lambda", FLAGS_taubin_lambda, 1e-6, 1, "e.g. 0.5");
+  RequireInRange("taubin_mu", FLAGS_taubin_mu, -1, -1e-6, "e.g. -0.53");
+  RequireInRange("taubin_iterations", static_cast<long>(FLAGS_taubin_iterations), 1, 1000, "e.g. 1");
+  RequireInRange("target_penetration", FLAGS_target_penetration, 1e-6, 0.02,
+                 "metres, e.g. 3e-4 (0.3 mm)");
   if (FLAGS_exponent < 2 || FLAGS_exponent > 4)
     throw InputError("--exponent", "", "must be 2, 3 or 4", "use --exponent=3 (the paper)");
   if (!(FLAGS_pressure_smoothing >= 0 && FLAGS_pressure_smoothing <= 1))
@@ -75,7 +82,8 @@ void ApplyDesignFlags(Scenario* scenario) {
   if (FLAGS_contact_stiffness == "scenario") return;
   if (FLAGS_contact_stiffness != "auto") {
     const double k = ParseNonNegative(FLAGS_contact_stiffness, "contact_stiffness");
-    if (!(k > 0)) throw InputError("--contact_stiffness", "", "must be positive", "κ in Pa/m, e.g. 1e8");
+    RequireInRange("contact_stiffness", k, 1e3, 1e14,
+                   "κ in Pa/m (contact pressure per metre of penetration), e.g. 1e8, or auto");
     design.equilibrium.contact_stiffness = k;
     return;
   }
@@ -90,15 +98,21 @@ void ApplyDesignFlags(Scenario* scenario) {
   design.equilibrium.contact_stiffness = solver.options().contact_stiffness;
 }
 
-double ApplyGammaFlags(DesignProblem* problem) {
+double ApplyGammaFlags(DesignProblem* problem, const DesignEvaluation* at_x0) {
   double gamma = 0;
   if (FLAGS_gamma == "auto") {
     std::string message;
-    gamma = AutoGamma(*problem, FLAGS_gamma_power, &message);
+    gamma = at_x0 ? AutoGammaFrom(*at_x0, FLAGS_gamma_power, &message)
+                  : AutoGamma(*problem, FLAGS_gamma_power, &message);
     if (gamma < 0) throw InputError("--gamma", "", message, "give --gamma=VALUE explicitly");
     std::cout << "  " << message << "\n";
   } else {
     gamma = ParseNonNegative(FLAGS_gamma, "gamma");
+  }
+  if (!std::isfinite(gamma) || gamma > 1e300) {
+    throw InputError("--gamma_power", "",
+                     "makes γ " + std::to_string(gamma) + ", which overflows φ",
+                     "use a power between -20 and 20");
   }
   problem->set_gamma(gamma);
   return gamma;

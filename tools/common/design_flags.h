@@ -18,7 +18,8 @@ namespace ergo {
 void ApplyDesignFlags(Scenario* scenario);
 
 // γ from --gamma/--gamma_power, set on `problem` and returned. Prints how it was chosen.
-// Throws InputError when auto cannot be computed (e.g. ψ(x₀) = 0).
-double ApplyGammaFlags(DesignProblem* problem);
+// Throws InputError when auto cannot be computed (e.g. ψ(x₀) = 0). `at_x0`, if given, is an
+// evaluation of x₀ already made (ok), so auto needs no solve of its own.
+double ApplyGammaFlags(DesignProblem* problem, const DesignEvaluation* at_x0 = nullptr);
 
 }  // namespace ergo

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include <gflags/gflags.h>
@@ -12,6 +14,7 @@
 #include "problems/chair_scenario.h"
 #include "problems/mouse_scenario.h"
 #include "problems/shoe_scenario.h"
+#include "tools/common/flag_checks.h"
 
 // Shared by the three scenes.
 DEFINE_string(preset, "quick",
@@ -154,9 +157,58 @@ UserSupportInput UserSupportFlags() {
   return input;
 }
 
+// Every scene flag checked at once, before anything is built: finite, in range, and not
+// asking for meshes that would not fit in memory.
+void ValidateSceneFlags() {
+  auto optional_length = [](const char* flag, double value, double high, const char* fix) {
+    // Negative or 0 = the preset's; otherwise a finite length up to `high`.
+    if (std::isnan(value) || (value > 0 && !(value <= high)))
+      RequireInRange(flag, value, 0, high, fix);
+  };
+  optional_length("negative_image_depth", FLAGS_negative_image_depth, 0.2, "metres, e.g. 0.05");
+  optional_length("start_gap", FLAGS_start_gap, 0.1, "metres, e.g. 0.001");
+  RequireInRange("body_edge_length", FLAGS_body_edge_length, 0, 0.5,
+                 "metres, e.g. 0.01; 0 = the preset's");
+  RequireInRange("support_edge_length", FLAGS_support_edge_length, 0, 0.5,
+                 "metres, e.g. 0.005; 0 = the preset's");
+  // Meshes beyond a few million elements do not fit this machine's memory or time: the body
+  // builder refuses those itself; the designed support surface is estimated here (its
+  // largest top, the chair's 0.5 m x 0.5 m, at the requested spacing).
+  if (FLAGS_support_edge_length > 0) {
+    const double vertices = (0.5 / FLAGS_support_edge_length) * (0.5 / FLAGS_support_edge_length);
+    if (vertices > 2e6) {
+      std::ostringstream what;
+      what << "would make a support of about " << std::scientific << std::setprecision(2)
+           << vertices << " vertices (over 2e6; roughly " << vertices * 2e-6
+           << " GB for its trees and the design's operators)";
+      throw InputError("--support_edge_length", "", what.str(),
+                       "use a spacing of 0.5 mm or more, e.g. 0.0025");
+    }
+  }
+  if (FLAGS_body_edge_length > 0 && FLAGS_body_edge_length < 1e-3) {
+    throw InputError("--body_edge_length", "",
+                     "is below 1 mm: the generated bodies would have over 1e8 tets",
+                     "use 0.003 or more (the paper presets use 0.006–0.019)");
+  }
+  RequireInRange("skin_depth", FLAGS_skin_depth, 1e-4, 0.2, "metres, e.g. 0.02");
+  RequireInRange("skin_youngs_modulus", FLAGS_skin_youngs_modulus, 1, 1e9, "Pa, e.g. 1e4");
+  RequireInRange("skin_poisson_ratio", FLAGS_skin_poisson_ratio, -0.99, 0.4999, "e.g. 0.45");
+  if (std::isnan(FLAGS_skin_total_mass) || FLAGS_skin_total_mass > 1e4)
+    RequireInRange("skin_total_mass", FLAGS_skin_total_mass, -1e9, 1e4, "kg; negative = from volume");
+  RequireInRange("designed_min_normal_y", FLAGS_designed_min_normal_y, -1, 1, "e.g. 0.5");
+  RequireInRange("chair_upper_body_load", FLAGS_chair_upper_body_load, 0, 1e4, "N, e.g. 0");
+  RequireInRange("chair_front_radius", FLAGS_chair_front_radius, 0, 0.2, "metres, e.g. 0.06");
+  RequireInRange("chair_body_mass", FLAGS_chair_body_mass, 1, 500, "kg, e.g. 30");
+  RequireInRange("shoe_lean_torque", FLAGS_shoe_lean_torque, -1e3, 1e3, "N m, e.g. 0");
+  RequireInRange("shoe_body_mass", FLAGS_shoe_body_mass, 1, 500, "kg, e.g. 75");
+  RequireInRange("shoe_load_fraction", FLAGS_shoe_load_fraction, 0, 1, "e.g. 0.5");
+  RequireInRange("mouse_hand_mass", FLAGS_mouse_hand_mass, 0.01, 10, "kg, e.g. 0.45");
+}
+
 // The flags every scene shares, applied to its options struct.
 template <typename Options>
 void ApplyCommonFlags(Options* o) {
+  ValidateSceneFlags();
   o->negative_image = FLAGS_negative_image;
   if (FLAGS_negative_image_depth >= 0) o->negative.depth = FLAGS_negative_image_depth;
   if (FLAGS_body_edge_length < 0)

@@ -27,6 +27,7 @@
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
+#include "tools/common/flag_checks.h"
 
 DEFINE_string(surface, "", "closed or open (flat-cut) skin surface: .obj .off .ply .stl .msh");
 DEFINE_string(unit, "m", "unit of --surface and of the CSVs' x,y,z and depth: m or mm");
@@ -273,9 +274,15 @@ int Build() {
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(ergo::kUsage);
+  try {
+    ergo::CheckCommandLine(argc, argv, /*positional=*/1);  // the subcommand
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_body: " << error.what() << "\nusage: " << ergo::kUsage << "\n";
+    return 2;
+  }
   gflags::ParseCommandLineFlags(&argc, &argv, true);
+  ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
-  FLAGS_logtostderr = true;
   if (argc != 2 || std::string(argv[1]) != "build") {
     std::cerr << "ergo_body: expected the subcommand `build`"
               << (argc > 1 ? ", got `" + std::string(argv[1]) + "`" : "")

@@ -11,6 +11,7 @@
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "problems/bump_experiment.h"
+#include "tools/common/flag_checks.h"
 
 DEFINE_string(widths, "0.03,0.02,0.014,0.01,0.007,0.005", "bump widths (Gaussian σ) to sweep, m");
 DEFINE_double(bump_height, 0.004, "bump height, m (fixed over the sweep)");
@@ -44,6 +45,13 @@ std::vector<double> ParseList(const std::string& text, const std::string& flag) 
 }
 
 int Run() {
+  RequireInRange("bump_height", FLAGS_bump_height, 0, 0.019, "metres below the 2 cm plate, e.g. 0.004");
+  RequireInRange("ball_radius", FLAGS_ball_radius, 0.01, 0.5, "metres, e.g. 0.05");
+  RequireInRange("core_radius", FLAGS_core_radius, 1e-3, FLAGS_ball_radius * 0.95,
+                 "metres, below the ball radius, e.g. 0.03");
+  RequireInRange("youngs_modulus", FLAGS_youngs_modulus, 1, 1e9, "Pa, e.g. 1e4");
+  RequireInRange("edge_length", FLAGS_edge_length, 2e-3, 0.1, "metres, e.g. 0.01");
+  RequireInRange("contact_stiffness", FLAGS_contact_stiffness, 1e3, 1e14, "Pa/m, e.g. 1e7");
   BumpScenarioOptions options;
   options.bump_height = FLAGS_bump_height;
   options.ball_radius = FLAGS_ball_radius;
@@ -90,7 +98,14 @@ int Run() {
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "ζ against the spatial frequency of a bump under a soft ball (paper Fig. 5)");
+  try {
+    ergo::CheckCommandLine(argc, argv);
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_bump: " << error.what() << "\n";
+    return 2;
+  }
   gflags::ParseCommandLineFlags(&argc, &argv, true);
+  ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
   try {
     return ergo::Run();

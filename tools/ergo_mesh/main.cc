@@ -20,6 +20,7 @@
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
+#include "tools/common/flag_checks.h"
 
 DEFINE_bool(closed, false, "check: the surface must be closed (open boundary is a problem)");
 DEFINE_string(unit, "m", "unit of the input file's coordinates: m or mm");
@@ -70,27 +71,6 @@ int Convert(const std::string& in, const std::string& out) {
   return 0;
 }
 
-// gflags exits with status 1 on an unknown flag, which would read as "problems found":
-// refuse unknown flags first, with the usage status 2.
-bool AllFlagsKnown(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    std::string name = argv[i];
-    if (name == "--") break;
-    if (name.size() < 2 || name[0] != '-') continue;
-    name = name.substr(name.find_first_not_of('-'));
-    name = name.substr(0, name.find('='));
-    gflags::CommandLineFlagInfo info;
-    if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
-    if (name.rfind("no", 0) == 0 && gflags::GetCommandLineFlagInfo(name.substr(2).c_str(), &info) &&
-        info.type == "bool") {
-      continue;
-    }
-    std::cerr << "--" << name << ": unknown flag (fix: see ergo_mesh --help)\n";
-    return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -98,8 +78,14 @@ int main(int argc, char** argv) {
       "ergo_mesh check FILE [--closed] [--unit=m|mm]\n"
       "       ergo_mesh convert IN OUT [--unit=m|mm] "
       "[--out_unit=m|mm] [--binary] [--msh22]");
-  if (!AllFlagsKnown(argc, argv)) return kUsageError;
+  try {
+    ergo::CheckCommandLine(argc, argv, /*positional=*/3);  // the verb and its files
+  } catch (const ergo::InputError& error) {
+    std::cerr << error.what() << "\n";
+    return kUsageError;
+  }
   gflags::ParseCommandLineFlags(&argc, &argv, true);
+  ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
   const std::string command = argc > 1 ? argv[1] : "";
   try {

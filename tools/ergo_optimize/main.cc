@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include <gflags/gflags.h>
@@ -35,6 +36,7 @@
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
+#include "tools/ergo_optimize/checkpoint.h"
 #include "tools/ergo_optimize/run_outputs.h"
 #include "tools/ergo_optimize/run_summary.h"
 
@@ -66,6 +68,12 @@ DEFINE_int32(robust_placements, 1,
              "±--robust_shift_mm along the longer or both horizontal axes), each with its own "
              "equilibrium and adjoint, in parallel threads");
 DEFINE_double(robust_shift_mm, 3, "--robust_placements: the shift of the off-centre placements, mm");
+DEFINE_string(resume, "",
+              "continue the run whose output directory is DIR from its checkpoint "
+              "(DIR.checkpoint.json), with its flags; --out defaults to DIR");
+DEFINE_int32(checkpoint_every, 1,
+             "write DIR.checkpoint.json after a round once at least this many evaluations have "
+             "passed since the last one (rounds: --round_evals); 0 = no checkpoints");
 DEFINE_bool(placement_checks, true,
             "score the initial and the kept design with the body placed off centre and tilted");
 DEFINE_double(placement_shift_mm, 3,
@@ -88,6 +96,8 @@ void ValidateRunFlags() {
   RequireInRange("round_evals", static_cast<long>(FLAGS_round_evals), 0, 1000000,
                  "e.g. 40; 0 = one round");
   RequireInRange("candidates", static_cast<long>(FLAGS_candidates), 1, 10, "e.g. 3");
+  RequireInRange("checkpoint_every", static_cast<long>(FLAGS_checkpoint_every), 0, 100000000,
+                 "evaluations, e.g. 1 (every round); 0 = none");
   if (FLAGS_robust_placements != 1 && FLAGS_robust_placements != 3 &&
       FLAGS_robust_placements != 5) {
     throw InputError("--robust_placements", "",
@@ -157,27 +167,34 @@ int Run() {
   ApplyDesignFlags(&scenario);  // exponent, smoothing, Taubin, contact stiffness, placement
   DesignProblem problem = scenario.MakeProblem();
   const Eigen::VectorXd x0 = problem.InitialDesign();
-  const double gamma = ApplyGammaFlags(&problem);
   // Everything reported is placed afresh; the optimiser's path is `problem`'s own mode.
   DesignProblem fresh(problem);
   fresh.set_placement(DesignPlacement::kFresh);
   fresh.ClearWarmStarts();
+  // The initial design first: an equilibrium that fails there is a failed computation (exit
+  // 1), not a bad flag; γ = auto then reads ζ and ψ off this evaluation.
+  const DesignEvaluation first = DesignProblem(fresh).Evaluate(x0, false);
+  if (StopOnSignals::stopped()) {
+    std::cerr << "ergo_optimize: interrupted before any result; nothing written\n";
+    return StopOnSignals::ExitCode();
+  }
+  if (!first.ok) {
+    std::cerr << "ergo_optimize: the body placed on the initial support did not reach "
+                 "equilibrium: "
+              << first.message << "\n";
+    return 1;
+  }
+  const double gamma = ApplyGammaFlags(&problem, &first);
+  fresh.set_gamma(gamma);
   RunSummary summary;
   summary.scenario = &scenario;
   summary.optimizer = FLAGS_optimizer;
   summary.placement = PlacementName(scenario.design.placement);
   summary.robust_placements = FLAGS_robust_placements;
   summary.gamma = gamma;
-  summary.initial = ReportDesign(fresh, x0);
-  if (StopOnSignals::stopped()) {
-    std::cerr << "ergo_optimize: interrupted before any result; nothing written\n";
-    return StopOnSignals::ExitCode();
-  }
-  if (!summary.initial.evaluation.ok) {
-    std::cerr << "ergo_optimize: the initial equilibrium failed: "
-              << summary.initial.evaluation.message << "\n";
-    return 1;
-  }
+  DesignEvaluation initial_evaluation = first;
+  initial_evaluation.phi = first.zeta + gamma * first.psi;  // φ with the γ just chosen
+  summary.initial = ReportEvaluation(fresh, x0, std::move(initial_evaluation));
   const DesignEvaluation& initial = summary.initial.evaluation;
   const double phi0 = initial.phi;
   std::cout << "  initial φ " << phi0 << " (ζ " << initial.zeta << ": skin " << initial.zeta_human
@@ -237,8 +254,28 @@ int Run() {
   RoundsOptions rounds_options;
   rounds_options.round_evaluations = FLAGS_round_evals;
   rounds_options.candidates = FLAGS_candidates;
-  const RoundsResult rounds = MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective,
-                                               budget, control, rounds_options);
+  // Checkpoints after rounds (a round depends only on its start: resumable exactly).
+  const std::string checkpoint = CheckpointPath(output.final_path());
+  const std::string fingerprint = RunFingerprint();
+  long checkpointed = 0;
+  if (FLAGS_checkpoint_every > 0) {
+    rounds_options.on_round = [&](const RoundsState& state) {
+      if (state.evaluations - checkpointed < FLAGS_checkpoint_every && !state.finished) return;
+      WriteCheckpoint(checkpoint, state, fingerprint);
+      checkpointed = state.evaluations;
+    };
+  }
+  RoundsState resumed;
+  if (!FLAGS_resume.empty()) {
+    resumed = ReadCheckpoint(CheckpointPath(FLAGS_resume), fingerprint);
+    checkpointed = resumed.evaluations;
+    std::cout << "resuming after round " << resumed.rounds << " (" << resumed.evaluations
+              << " evaluations, kept design " << resumed.kept_fresh_phi / phi0_objective
+              << " of the start)\n";
+  }
+  const RoundsResult rounds =
+      MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective, budget, control,
+                       rounds_options, FLAGS_resume.empty() ? nullptr : &resumed);
   summary.result = rounds.result;
   summary.interrupted = StopOnSignals::stopped();
   summary.candidate_phi = rounds.candidate_phi;
@@ -276,14 +313,21 @@ int Run() {
     kept = x0;
     summary.optimized = summary.initial;
   }
-  if (rounds.kept_path && kept.isApprox(rounds.kept_x, 0.0) && robust.size() == 1) {
-    DesignProblem& path = static_cast<DesignObjective&>(*rounds.kept_path).problem();
+  // The optimiser's own value of the kept design, and its report on that path when the
+  // path's state is at hand (not after a resume, nor for a post-smoothed design).
+  const bool on_path = kept == rounds.kept_x;
+  summary.followed_phi = on_path ? rounds.kept_followed_phi : std::numeric_limits<double>::quiet_NaN();
+  if (rounds.kept_path && on_path) {
+    DesignProblem& path =
+        robust.size() == 1
+            ? static_cast<DesignObjective&>(*rounds.kept_path).problem()
+            : static_cast<RobustDesignObjective&>(*rounds.kept_path).problem(0);
     summary.followed = ReportDesign(path, kept);
-  } else if (rounds.kept_path && kept.isApprox(rounds.kept_x, 0.0)) {
-    DesignProblem& path = static_cast<RobustDesignObjective&>(*rounds.kept_path).problem(0);
-    summary.followed = ReportDesign(path, kept);
-  } else {
-    summary.followed = summary.optimized;
+    // The robust objective's value is a mean over placements; report the centred path's.
+    if (robust.size() > 1 && summary.followed.evaluation.ok)
+      summary.followed_phi = summary.followed.evaluation.phi;
+  } else if (kept == x0) {
+    summary.followed = summary.initial;
   }
 
   // Placement checks: the body landing a few millimetres off, or tilted.
@@ -333,7 +377,14 @@ int Run() {
     return 1;
   }
   std::cout << markdown << "wrote " << output.final_path() << "/\n";
-  return StopOnSignals::stopped() ? StopOnSignals::ExitCode() : 0;
+  if (StopOnSignals::stopped()) {
+    if (FLAGS_checkpoint_every > 0 && std::filesystem::exists(checkpoint))
+      std::cout << "resume with: ergo_optimize --resume=" << output.final_path() << "\n";
+    return StopOnSignals::ExitCode();
+  }
+  std::error_code removed;
+  std::filesystem::remove(checkpoint, removed);  // the run is complete
+  return 0;
 }
 
 }  // namespace
@@ -355,6 +406,10 @@ int main(int argc, char** argv) {
   ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
   try {
+    if (!FLAGS_resume.empty()) {
+      if (gflags::GetCommandLineFlagInfoOrDie("out").is_default) FLAGS_out = FLAGS_resume;
+      ergo::ApplyCheckpointFlags(ergo::CheckpointPath(FLAGS_resume));
+    }
     return ergo::Run();
   } catch (const ergo::InputError& error) {
     std::cerr << "ergo_optimize: " << error.what() << "\n";

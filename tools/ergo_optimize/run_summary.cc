@@ -76,8 +76,8 @@ Json SummaryJson(const RunSummary& s) {
   j["optimized_score"] = Number(Of(s.optimized, fresh.phi));
   j["reduction_percent"] = Number(Of(s.optimized, Reduction(phi0, fresh.phi)));
   j["fresh_placement_converged"] = fresh.ok;
-  j["followed_score"] = Number(Of(s.followed, followed.phi));
-  j["followed_reduction_percent"] = Number(Of(s.followed, Reduction(phi0, followed.phi)));
+  j["followed_score"] = Number(s.followed_phi);
+  j["followed_reduction_percent"] = Number(Reduction(phi0, s.followed_phi));
   j["initial_zeta"] = initial.zeta;
   j["optimized_zeta"] = Number(Of(s.optimized, fresh.zeta));
   j["followed_zeta"] = Number(Of(s.followed, followed.zeta));
@@ -184,9 +184,9 @@ std::string SummaryMarkdown(const RunSummary& s) {
     md << "**Placed afresh on the optimised design, the body scores φ "
        << Format("%.4g", fresh.phi) << ", " << Format("%.1f", Reduction(phi0, fresh.phi))
        << " % below the initial design**";
-    if (followed.ok)
-      md << " (on the path the optimiser followed: " << Format("%.1f", Reduction(phi0, followed.phi))
-         << " %)";
+    if (std::isfinite(s.followed_phi))
+      md << " (on the path the optimiser followed: "
+         << Format("%.1f", Reduction(phi0, s.followed_phi)) << " %)";
     md << ". The skin's side of the score, what the person feels, falls "
        << Format("%.1f", Reduction(initial.zeta_human, fresh.zeta_human)) << " %; the peak skin "
        << "pressure goes from " << Format("%.1f", s.initial.peak_pressure / 1e3) << " to "
@@ -198,7 +198,7 @@ std::string SummaryMarkdown(const RunSummary& s) {
        << fresh.message << "**\n\n";
   }
   md << "| | initial | optimised, placed afresh | optimised, optimiser's path |\n|---|---|---|---|\n"
-     << triple("score φ", "%.4g", 1, phi0, Of(s.optimized, fresh.phi), Of(s.followed, followed.phi))
+     << triple("score φ", "%.4g", 1, phi0, Of(s.optimized, fresh.phi), s.followed_phi)
      << triple("ζ (pressure term)", "%.4g", 1, initial.zeta, Of(s.optimized, fresh.zeta),
                Of(s.followed, followed.zeta))
      << triple("ζ, skin side", "%.4g", 1, initial.zeta_human, Of(s.optimized, fresh.zeta_human),

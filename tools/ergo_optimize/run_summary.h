@@ -6,6 +6,7 @@
 // counts. SI units in the JSON; the markdown shows kPa, mm and cm².
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct RunSummary {
   DesignReport initial;       // x₀, placed afresh
   DesignReport optimized;     // the kept design, placed afresh: the headline
   DesignReport followed;      // the kept design on the optimiser's own path (may not be ok)
+  // The optimiser's own value of the kept design (its path), known even where the path's
+  // report is not (after a resume): summary's followed_score.
+  double followed_phi = std::numeric_limits<double>::quiet_NaN();
   std::vector<PlacementOutcome> checks;
   std::vector<double> candidate_phi;        // the optimiser's values of the checked designs
   std::vector<double> candidate_fresh_phi;  // the same designs placed afresh

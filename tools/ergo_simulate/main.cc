@@ -1,7 +1,10 @@
 // ergo_simulate: the static contact equilibrium of a body (a directory written by
 // `ergo_body build`) resting on a support mesh under gravity and an external wrench (paper
-// §3.3–3.5). Writes OUT/body_deformed.vtu, OUT/support.vtu and OUT/summary.json.
-// Exit status: 0 converged, 1 not converged (the summary says why), 2 unusable input.
+// §3.3–3.5). Writes OUT/body_deformed.vtu, OUT/support.vtu and OUT/summary.json, as one unit
+// (a killed run leaves the previous OUT or none). Prints one line per Newton iteration.
+// Exit status: 0 converged with the stiffness asked for, 1 the computation did not succeed
+// (not converged, no contact, stiffness calibration failed: the summary says why), 2 unusable
+// input, 130 / 143 interrupted (nothing written).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +27,9 @@
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
+#include "tools/common/flag_checks.h"
+#include "tools/common/output_directory.h"
+#include "tools/common/run_signals.h"
 
 DEFINE_string(body, "", "body directory written by `ergo_body build` (required)");
 DEFINE_string(support, "", "support surface mesh: .obj .off .ply .stl .msh (required, closed)");
@@ -42,6 +48,7 @@ DEFINE_double(gap, 1e-3, "gap left by --place=auto, m");
 DEFINE_double(tolerance, 1e-8, "convergence: force residual relative to the load");
 DEFINE_int32(max_iterations, 100, "Newton iteration cap");
 DEFINE_int32(threads, 0, "threads for assembly and contact (0 = all cores)");
+DEFINE_bool(progress, true, "print one line per Newton iteration");
 
 namespace ergo {
 namespace {
@@ -70,17 +77,41 @@ void Require(const std::string& value, const std::string& flag) {
   if (value.empty()) throw InputError("--" + flag, "", "is required", "see ergo_simulate --help");
 }
 
+// The support's size against the body's: a file in millimetres read as metres is a thousand
+// times too large (and the other way round).
+void CheckUnits(const LayeredBody& body, const TriMesh& support) {
+  const Vertices& b = body.rest().vertices;
+  const double body_size = (b.colwise().maxCoeff() - b.colwise().minCoeff()).norm();
+  const double support_size =
+      (support.vertices.colwise().maxCoeff() - support.vertices.colwise().minCoeff()).norm();
+  const double ratio = support_size / body_size;
+  if (ratio > 100 || ratio < 1e-2) {
+    std::ostringstream what;
+    what << "the support is " << support_size << " m across and the body " << body_size
+         << " m: the units disagree by about " << (ratio > 1 ? ratio : 1 / ratio) << "x";
+    throw InputError("--unit", "", what.str(),
+                     ratio > 1 ? "a file in millimetres needs --unit=mm"
+                               : "a file in metres needs --unit=m");
+  }
+}
+
 int Run() {
   Require(FLAGS_body, "body");
   Require(FLAGS_support, "support");
   Require(FLAGS_out, "out");
+  RequireInRange("max_iterations", static_cast<long>(FLAGS_max_iterations), 1, 100000,
+                 "e.g. 100");
+  RequireInRange("gap", FLAGS_gap, 0, 0.1, "metres, e.g. 0.001");
+  RequireInRange("target_penetration", FLAGS_target_penetration, 1e-6, 0.02,
+                 "metres, e.g. 3e-4 (0.3 mm)");
+  RequireInRange("tolerance", FLAGS_tolerance, 1e-14, 1e-2, "e.g. 1e-8");
+  RequireInRange("threads", static_cast<long>(FLAGS_threads), 0, 1024, "0 = all cores");
   LengthUnit unit;
   if (!ParseLengthUnit(FLAGS_unit, &unit))
     throw InputError("--unit", "", "'" + FLAGS_unit + "' is not m or mm",
                      "use --unit=m or --unit=mm");
   if (FLAGS_place != "auto" && FLAGS_place != "none")
     throw InputError("--place", "", "'" + FLAGS_place + "'", "use auto or none");
-  if (!(FLAGS_tolerance > 0)) throw InputError("--tolerance", "", "must be positive", "e.g. 1e-8");
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
 
   LayeredBodyOptions scenario;
@@ -88,14 +119,30 @@ int Run() {
   scenario.external_force = ParseVector(FLAGS_external_force, "external_force");
   scenario.external_torque = ParseVector(FLAGS_external_torque, "external_torque");
   scenario.lock = ParseCoreLock(FLAGS_lock, "--lock");
+  if (scenario.gravity.norm() == 0 && scenario.external_force.norm() == 0) {
+    throw InputError("--gravity", "", "and --external_force are both zero: nothing presses the "
+                     "body onto the support",
+                     "give gravity (default 0,-9.81,0) or an external force");
+  }
+  StopOnSignals signals;
+  OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
   const LayeredBody body = LoadLayeredBody(FLAGS_body, scenario);
   const TriMesh support_mesh = ReadTriMesh(FLAGS_support, ReadOptions{unit});
+  CheckUnits(body, support_mesh);
   const Support support(support_mesh, FLAGS_support);
 
   const bool auto_stiffness = FLAGS_contact_stiffness == "auto";
   EquilibriumOptions options;
   options.relative_tolerance = FLAGS_tolerance;
   options.max_iterations = FLAGS_max_iterations;
+  options.stop = &StopOnSignals::flag();
+  if (FLAGS_progress) {
+    options.progress = [](int iteration, double residual, double step, int contacts) {
+      std::printf("  Newton %3d  residual %.3e N  step %.3g  contact vertices %d\n", iteration,
+                  residual, step, contacts);
+      std::fflush(stdout);
+    };
+  }
   if (auto_stiffness) {
     // A first guess from the load: spread over ~1 % of the skin (at least ten vertices'
     // areas) at the target depth.
@@ -127,6 +174,7 @@ int Run() {
   EquilibriumSolver solver(body, options);
   Json calibration_json;
   EquilibriumResult result;
+  bool calibrated = true;
   if (auto_stiffness) {
     const CalibrationResult calibration = CalibrateContactStiffness(
         solver, support, start, FLAGS_target_penetration, CalibrationOptions(), &result);
@@ -137,20 +185,24 @@ int Run() {
     calibration_json["penetration_m"] = calibration.penetration;
     calibration_json["evaluations"] = calibration.evaluations;
     calibration_json["message"] = calibration.message;
+    calibrated = calibration.converged;
     // Final, reported solve at the calibrated k from the last converged state.
     result = solver.Solve(support, result.converged ? result.state : start);
   } else {
     result = solver.Solve(support, start);
   }
   std::cout << result.FullReport() << "\n";
+  if (StopOnSignals::stopped()) {
+    std::cerr << "ergo_simulate: interrupted before any result; nothing written\n";
+    return StopOnSignals::ExitCode();
+  }
 
   // Pressures from the very springs of the final state (the solver's last evaluation).
   const ContactPressureEvaluator evaluator(body, support_mesh, PressureCostOptions());
   const ContactPressures pressures =
       evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
 
-  std::filesystem::create_directories(FLAGS_out);
-  const std::filesystem::path out(FLAGS_out);
+  const std::filesystem::path out(output.path());
   WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, pressures);
   WriteSupportVtu((out / "support.vtu").string(), support_mesh, pressures, Vertices());
   Json summary = EquilibriumSummary(body, result, pressures, solver.options().contact_stiffness);
@@ -158,9 +210,26 @@ int Run() {
   summary["body_directory"] = FLAGS_body;
   summary["support_file"] = FLAGS_support;
   summary["lock"] = body.lock().ToString();
+  const bool touched = result.contact_vertices > 0 || result.contact_springs > 0;
+  summary["contact"] = touched;
   WriteJsonFile((out / "summary.json").string(), summary);
-  std::cout << "wrote " << (out / "body_deformed.vtu").string() << ", support.vtu, summary.json\n";
-  return result.converged ? 0 : 1;
+  std::string error;
+  if (!output.Commit(&error)) {
+    std::cerr << "ergo_simulate: " << error << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << output.final_path() << "/body_deformed.vtu, support.vtu, summary.json\n";
+  if (!result.converged) return 1;
+  if (!touched) {
+    std::cerr << "ergo_simulate: the body does not touch the support at equilibrium\n";
+    return 1;
+  }
+  if (!calibrated) {
+    std::cerr << "ergo_simulate: the stiffness calibration did not reach --target_penetration "
+                 "(the summary's calibration says why); the result uses the last stiffness\n";
+    return 1;
+  }
+  return 0;
 }
 
 }  // namespace
@@ -171,7 +240,14 @@ int main(int argc, char** argv) {
       "static contact equilibrium of a body on a support\n"
       "  ergo_simulate --body=DIR --support=FILE [--unit=mm] [--external_force=FX,FY,FZ]\n"
       "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto] --out=OUT");
+  try {
+    ergo::CheckCommandLine(argc, argv);
+  } catch (const ergo::InputError& error) {
+    std::cerr << "ergo_simulate: " << error.what() << "\n";
+    return 2;
+  }
   gflags::ParseCommandLineFlags(&argc, &argv, true);
+  ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
   try {
     return ergo::Run();

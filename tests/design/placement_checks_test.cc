@@ -1,0 +1,82 @@
+// Placement checks: the moved start poses (rigid: shape kept, centre moved, rotation about
+// the core centre), the checks' axes across the load and tilts about free rotation axes
+// only, and a placed problem starting from the moved pose.
+#include "ergo/design/placement_checks.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "ergo/body/core_lock.h"
+#include "ergo/mesh/primitives.h"
+#include "tests/support/body/body_fixtures.h"
+
+namespace ergo {
+namespace {
+
+LayeredBody Cube(const std::string& lock) {
+  LayeredBodyOptions options;
+  options.lock = ParseCoreLock(lock);
+  return testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options, Eigen::Vector3d(0, 0.06, 0));
+}
+
+TEST(Design, MovedRigidlyKeepsTheShapeAndTurnsAboutTheCoreCentre) {
+  const LayeredBody body = Cube("tx,tz");
+  BodyState state = RestState(body);
+  state.free_displacement.setConstant(1e-4);  // a deformed state
+  const Eigen::Vector3d shift(0.003, 0, -0.002), tilt(0.02, 0, 0);
+  const BodyState moved = MovedRigidly(body, state, shift, tilt);
+  const Vertices before = DeformedPositions(body, state), after = DeformedPositions(body, moved);
+  const Eigen::Matrix3d turn = RotationExp(tilt);
+  for (Eigen::Index v = 0; v < before.rows(); ++v) {
+    const Eigen::Vector3d expected =
+        state.centre + turn * (before.row(v).transpose() - state.centre) + shift;
+    EXPECT_LT((after.row(v).transpose() - expected).norm(), 1e-12) << "vertex " << v;
+  }
+  EXPECT_LT((moved.centre - state.centre - shift).norm(), 1e-15);
+  EXPECT_LT((moved.torque_angle - tilt).norm(), 1e-15);
+}
+
+TEST(Design, PlacementChecksShiftAcrossTheLoadAndTiltAboutFreeAxesOnly) {
+  const LayeredBody pitch_only = Cube("tx,tz,ry,rz");  // the shoe's lock: pitch about x
+  const std::vector<Placement> checks = PlacementChecks(pitch_only, 3e-3, M_PI / 180, true);
+  ASSERT_EQ(checks.size(), 6u);
+  const Eigen::Vector3d down = pitch_only.TotalLoad().normalized();
+  int shifts = 0, tilts = 0;
+  for (const Placement& p : checks) {
+    if (!p.shift.isZero()) {
+      ++shifts;
+      EXPECT_NEAR(p.shift.norm(), 3e-3, 1e-15) << p.name;
+      EXPECT_NEAR(p.shift.dot(down), 0, 1e-15) << p.name;
+      EXPECT_TRUE(p.tilt.isZero()) << p.name;
+    } else {
+      ++tilts;
+      EXPECT_NEAR(std::abs(p.tilt.x()), M_PI / 180, 1e-15) << p.name;
+      EXPECT_EQ(p.tilt.y(), 0);
+      EXPECT_EQ(p.tilt.z(), 0);
+    }
+  }
+  EXPECT_EQ(shifts, 4);
+  EXPECT_EQ(tilts, 2);
+  EXPECT_EQ(checks[0].name, "x+3mm");
+  // Rotations locked (the mouse): shifts only; a yaw about the load is no tilt.
+  EXPECT_EQ(PlacementChecks(Cube("tx,tz,rx,ry,rz"), 3e-3, M_PI / 180, true).size(), 4u);
+  EXPECT_EQ(PlacementChecks(Cube("tx,tz,rx,rz"), 3e-3, M_PI / 180, true).size(), 4u);
+}
+
+TEST(Design, APlacedProblemStartsFromTheMovedPose) {
+  const LayeredBody body = Cube("tx,tz");
+  const TriMesh slab = MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {4, 1, 4});
+  DesignOptions options;
+  options.equilibrium.contact_stiffness = 4e6;
+  options.placement = DesignPlacement::kFollowed;
+  const DesignProblem problem(body, slab, RestState(body), options);
+  Placement placement;
+  placement.shift = Eigen::Vector3d(0.003, 0, 0);
+  const DesignProblem placed = PlacedProblem(problem, placement);
+  EXPECT_EQ(placed.options().placement, DesignPlacement::kFresh);
+  EXPECT_LT((placed.start().centre - problem.start().centre - placement.shift).norm(), 1e-15);
+}
+
+}  // namespace
+}  // namespace ergo

@@ -1,0 +1,111 @@
+// Optimisation in fresh rounds (solvers/fresh_rounds.h) on a function whose path value
+// drifts from its fresh value, as a followed equilibrium can: the driver keeps only what the
+// fresh score confirms, never spends more than its budget (fresh checks included), restarts
+// rounds from the kept design, and reports the optimiser's own value beside the fresh one.
+#include "solvers/fresh_rounds.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "solvers/analytic_objectives.h"
+
+namespace ergo {
+namespace {
+
+// A quadratic whose value along an optimiser's path is lowered by a "drift" that grows with
+// the distance travelled since the path began (fresh score: the quadratic alone). The drift
+// rewards long paths, as a warm-started equilibrium can reward a design only on its path.
+class DriftingObjective : public Objective {
+ public:
+  DriftingObjective(std::shared_ptr<IllConditionedQuadratic> f, double drift)
+      : f_(std::move(f)), drift_(drift) {}
+  int NumParameters() const override { return f_->NumParameters(); }
+  ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override {
+    if (origin_.size() == 0) origin_ = x;
+    ObjectiveValue v = f_->Evaluate(x, with_gradient);
+    const double travelled = (x - origin_).norm();
+    v.phi -= drift_ * travelled;
+    v.zeta = v.phi;
+    if (with_gradient && travelled > 0) v.gradient -= drift_ * (x - origin_) / travelled;
+    return v;
+  }
+  std::unique_ptr<Objective> Clone() const override {
+    return std::make_unique<DriftingObjective>(*this);
+  }
+  double LargestMove(const Eigen::VectorXd& dx) const override { return f_->LargestMove(dx); }
+  double BoxHalfWidthForMove(double move) const override { return f_->BoxHalfWidthForMove(move); }
+  double LengthScale() const override { return f_->LengthScale(); }
+  std::string Describe() const override { return "drifting " + f_->Describe(); }
+
+ private:
+  std::shared_ptr<IllConditionedQuadratic> f_;
+  double drift_;
+  Eigen::VectorXd origin_;  // where this path began
+};
+
+TEST(Solvers, FreshRoundsKeepOnlyWhatTheFreshScoreConfirmsWithinTheBudget) {
+  auto f = std::make_shared<IllConditionedQuadratic>(10, 100, 3);
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(10);
+  const double phi0 = f->Evaluate(x0, false).phi;
+  long fresh_checks = 0;
+  RoundsProblem problem;
+  problem.make_objective = [&] { return std::make_unique<DriftingObjective>(f, 0.05 * phi0); };
+  problem.fresh_score = [&](const Eigen::VectorXd& x) {
+    ++fresh_checks;
+    return f->Evaluate(x, false).phi;
+  };
+  std::string error;
+  std::unique_ptr<Optimizer> optimizer = MakeOptimizer("ceres-lbfgs", {}, &error);
+  ASSERT_TRUE(optimizer) << error;
+  Budget budget;
+  budget.max_evaluations = 60;
+  RoundsOptions options;
+  options.round_evaluations = 15;
+  options.candidates = 3;
+  const RoundsResult r = MinimizeInRounds(*optimizer, problem, x0, phi0, budget, {}, options);
+
+  // The budget holds with the fresh checks counted.
+  EXPECT_LE(r.result.evaluations, budget.max_evaluations);
+  EXPECT_GE(r.rounds, 2);
+  EXPECT_GE(fresh_checks, r.rounds);
+  // What is kept is what the fresh score says, and it is better than the start.
+  EXPECT_DOUBLE_EQ(r.kept_fresh_phi, f->Evaluate(r.kept_x, false).phi);
+  EXPECT_DOUBLE_EQ(r.result.best_phi, r.kept_fresh_phi);
+  EXPECT_LT(r.kept_fresh_phi, 0.5 * phi0);
+  // The optimiser's own value there is flattered by its path's drift, and reported as such.
+  EXPECT_LT(r.kept_followed_phi, r.kept_fresh_phi);
+  EXPECT_DOUBLE_EQ(r.result.followed_phi, r.kept_followed_phi);
+  // Each kept candidate was the best of its round's fresh checks.
+  ASSERT_FALSE(r.candidate_fresh_phi.empty());
+  ASSERT_GE(r.kept_candidate, 0);
+  for (double value : r.candidate_fresh_phi)
+    EXPECT_LE(r.candidate_fresh_phi[r.kept_candidate], value);
+  // The history runs on across rounds.
+  for (size_t i = 1; i < r.result.history.size(); ++i) {
+    EXPECT_GE(r.result.history[i].evaluations, r.result.history[i - 1].evaluations);
+    EXPECT_GT(r.result.history[i].iteration, r.result.history[i - 1].iteration);
+  }
+}
+
+TEST(Solvers, FreshRoundsReturnTheStartWhenNothingBeatsItAfresh) {
+  // Every move looks better on the path (the drift) but is worse afresh: f grows away from
+  // x0 = its minimiser.
+  auto f = std::make_shared<IllConditionedQuadratic>(4, 10, 5);
+  const Eigen::VectorXd x0 = f->Minimizer();
+  RoundsProblem problem;
+  problem.make_objective = [&] { return std::make_unique<DriftingObjective>(f, 1.0); };
+  problem.fresh_score = [&](const Eigen::VectorXd& x) { return f->Evaluate(x, false).phi; };
+  std::string error;
+  std::unique_ptr<Optimizer> optimizer = MakeOptimizer("steepest", {}, &error);
+  Budget budget;
+  budget.max_evaluations = 30;
+  const RoundsResult r = MinimizeInRounds(*optimizer, problem, x0, 0.0, budget, {}, {10, 2});
+  EXPECT_EQ(r.kept_x, x0);
+  EXPECT_EQ(r.kept_fresh_phi, 0.0);
+  EXPECT_EQ(r.kept_candidate, -1);
+  EXPECT_NE(r.result.stop_reason.find("placed afresh"), std::string::npos) << r.result.stop_reason;
+}
+
+}  // namespace
+}  // namespace ergo

@@ -1,0 +1,159 @@
+// Every tool over a table of bad flag values (issue "Reliability and security", item 3): each
+// must exit with status 2 before any computation, with a message naming the flag, and leave
+// no core file and no glog file behind — never a crash (SIGABRT from a CHECK, an uncaught
+// exception), a silent default, or exit 0/1.
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ergo/mesh/primitives.h"
+#include "ergo/mesh/mesh_io.h"
+#include "tests/support/test_paths.h"
+#include "tools/common/child_process.h"
+
+namespace ergo {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BadFlagCase {
+  std::string tool;
+  std::vector<std::string> arguments;
+  std::string expected;  // text the message must contain (the flag's name, usually)
+};
+
+class ToolsBadFlags : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scratch_ = new std::string(testing::MakeScratchDir("bad_flags"));
+    // A body and supports for ergo_simulate: the ball of the simulate tests.
+    const ChildProcessResult built = RunChildProcess(
+        {std::string(ERGO_BIN_DIR) + "/ergo_body", "build", "--shape=sphere_shell",
+         "--outer_radius=0.05", "--core_radius=0.03", "--youngs_modulus=1e4",
+         "--edge_length=0.015", "--out=" + *scratch_ + "/ball"},
+        /*quiet=*/true);
+    ASSERT_TRUE(built.ok()) << built.Describe();
+    WriteTriMesh(*scratch_ + "/slab_mm.stl",
+                 MakeBox({-150, -110, -150}, {150, -60, 150}, {2, 1, 2}));
+    fs::create_directories(*scratch_ + "/a_directory");
+    std::ofstream(*scratch_ + "/a_file") << "not a directory\n";
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*scratch_);
+    delete scratch_;
+  }
+  static std::string* scratch_;
+};
+std::string* ToolsBadFlags::scratch_ = nullptr;
+
+std::vector<BadFlagCase> Cases(const std::string& dir) {
+  const std::string shoe = "--flagfile=" + testing::SourcePath("data/shoe.flags");
+  const std::string out = "--out=" + dir + "/out";
+  const std::string simulate_body = "--body=" + dir + "/ball";
+  const std::string mm_support = "--support=" + dir + "/slab_mm.stl";
+  std::vector<BadFlagCase> cases = {
+      // ergo_optimize (scene, problem and run flags).
+      {"ergo_optimize", {shoe, "--max_evals=0", out}, "--max_evals"},
+      {"ergo_optimize", {shoe, "--max_seconds=-1", out}, "--max_seconds"},
+      {"ergo_optimize", {shoe, "--max_seconds=nan", out}, "--max_seconds"},
+      {"ergo_optimize", {shoe, "--threads=-3", out}, "--threads"},
+      {"ergo_optimize", {shoe, "--post_smoothing=-1", out}, "--post_smoothing"},
+      {"ergo_optimize", {shoe, "--body_edge_length=nan", out}, "--body_edge_length"},
+      {"ergo_optimize", {shoe, "--start_gap=nan", out}, "--start_gap"},
+      {"ergo_optimize", {shoe, "--support_edge_length=1e-5", out}, "--support_edge_length"},
+      {"ergo_optimize", {shoe, "--gamma_power=1000", out}, "--gamma_power"},
+      {"ergo_optimize", {shoe, "--contact_stiffness=-5", out}, "--contact_stiffness"},
+      {"ergo_optimize", {shoe, "--robust_placements=2", out}, "--robust_placements"},
+      {"ergo_optimize", {shoe, "--optimizer=newton", out}, "--optimizer"},
+      {"ergo_optimize", {shoe, "--lock=tx,ty,tz", out}, "translation"},
+      {"ergo_optimize", {shoe, "--filter_radius=-2", out}, "--filter_radius"},
+      {"ergo_optimize", {shoe, "--placement=sideways", out}, "--placement"},
+      {"ergo_optimize", {shoe, "--no_such_flag=1", out}, "--no_such_flag"},
+      {"ergo_optimize", {"--flagfile=" + dir + "/missing.flags", out}, "--flagfile"},
+      {"ergo_optimize", {"--flagfile=" + dir + "/a_directory", out}, "not a regular file"},
+      {"ergo_optimize", {shoe, "stray", out}, "unexpected argument"},
+      {"ergo_optimize", {shoe, "--out=" + dir + "/a_file"}, "not a directory"},
+      {"ergo_optimize", {shoe, "--out=/proc/ergo_out"}, "/proc"},
+      // ergo_compare.
+      {"ergo_compare", {"--scenario=bump", "--target_reduction=nan", out}, "--target_reduction"},
+      {"ergo_compare", {"--scenario=bump", "--max_evals=0", out}, "--max_evals"},
+      {"ergo_compare", {"--scenario=bump", "--optimizers=foo", out}, "--optimizers"},
+      {"ergo_compare", {"--scenario=bump"}, "--out"},
+      {"ergo_compare", {"--scenario=bump", "--bogus", out}, "--bogus"},
+      // ergo_simulate.
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--max_iterations=0", out},
+       "--max_iterations"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--max_iterations=-1", out},
+       "--max_iterations"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--gap=-1", out}, "--gap"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--gap=nan", out}, "--gap"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--target_penetration=0", out},
+       "--target_penetration"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--target_penetration=nan", out},
+       "--target_penetration"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--gravity=0,0,0", out},
+       "--gravity"},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--lock=tx,ty,tz,rx,ry,rz", out},
+       "translation"},
+      {"ergo_simulate", {simulate_body, mm_support, out}, "--unit=mm"},  // mm read as m
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--out=" + dir + "/a_file"},
+       "not a directory"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--out=/proc/x"}, "/proc"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--threads=-3", out},
+       "--threads"},
+      // ergo_body, ergo_mesh, ergo_bump.
+      {"ergo_body", {"build", "--shape=sphere_shell", "--outer_radius=0.05", "--core_radius=0.03",
+                     "--youngs_modulus=1e4", "--edge_length=nan", out},
+       "--edge_length"},
+      {"ergo_body", {"build", "--whatever=3", out}, "--whatever"},
+      {"ergo_mesh", {"check", dir + "/slab_mm.stl", "--frobnicate"}, "--frobnicate"},
+      {"ergo_bump", {"--edge_length=0", "--out=" + dir + "/bump.csv"}, "--edge_length"},
+      {"ergo_bump", {"--contact_stiffness=nan", "--out=" + dir + "/bump.csv"},
+       "--contact_stiffness"},
+  };
+  return cases;
+}
+
+TEST_F(ToolsBadFlags, EveryToolRefusesEveryBadFlagWithStatusTwoAndAMessage) {
+  const std::string& dir = *scratch_;
+  const fs::path cwd = dir + "/cwd";
+  fs::create_directories(cwd);
+  auto glog_files = [] {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+      count += entry.path().filename().string().find(".log.") != std::string::npos &&
+               entry.path().filename().string().rfind("ergo_", 0) == 0;
+    return count;
+  };
+  const int glog_before = glog_files();
+  for (const BadFlagCase& c : Cases(dir)) {
+    std::vector<std::string> argv = {std::string(ERGO_BIN_DIR) + "/" + c.tool};
+    argv.insert(argv.end(), c.arguments.begin(), c.arguments.end());
+    ChildOptions options;
+    options.output = dir + "/message.txt";
+    options.working_directory = cwd.string();
+    const ChildProcessResult run = RunChildProcess(argv, options);
+    std::ifstream in(options.output);
+    const std::string message((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+    const std::string line = CommandLineForDisplay(argv);
+    EXPECT_TRUE(run.started) << line;
+    EXPECT_EQ(run.signal, 0) << line << " was killed by a signal\n" << message;
+    EXPECT_EQ(run.exit_code, 2) << line << "\n" << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << line << ": the message does not name '" << c.expected << "':\n"
+        << message;
+    EXPECT_FALSE(fs::exists(dir + "/out/summary.json")) << line << " wrote outputs";
+  }
+  // No core dump, no glog file.
+  for (const auto& entry : fs::directory_iterator(cwd))
+    ADD_FAILURE() << "left behind: " << entry.path();
+  EXPECT_EQ(glog_files(), glog_before);
+}
+
+}  // namespace
+}  // namespace ergo

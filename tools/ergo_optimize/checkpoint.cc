@@ -1,0 +1,209 @@
+#include "tools/ergo_optimize/checkpoint.h"
+
+#include <filesystem>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include <gflags/gflags.h>
+
+#include "ergo/mesh/input_error.h"
+#include "ergo/mesh/json.h"
+
+namespace ergo {
+namespace {
+
+constexpr int kVersion = 1;
+
+Json Numbers(const Eigen::VectorXd& v) {
+  Json out = Json::Array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.Append(v[i]);
+  return out;
+}
+
+Json Numbers(const std::vector<double>& v) {
+  Json out = Json::Array();
+  for (double x : v) out.Append(x);
+  return out;
+}
+
+std::vector<double> ToVector(const Json& array) {
+  std::vector<double> out;
+  for (size_t i = 0; i < array.size(); ++i)
+    out.push_back(array[i].is_null() ? std::numeric_limits<double>::quiet_NaN() : array[i].AsNumber());
+  return out;
+}
+
+}  // namespace
+
+std::string CheckpointPath(const std::string& dir) {
+  std::error_code ec;
+  std::string base = std::filesystem::absolute(dir, ec).lexically_normal().string();
+  while (base.size() > 1 && base.back() == '/') base.pop_back();
+  return base + ".checkpoint.json";
+}
+
+std::string RunFingerprint() {
+  static const std::set<std::string> kIgnored = {
+      "out",      "resume",       "max_evals",        "max_seconds", "threads",
+      "progress", "plot",         "checkpoint_every", "flagfile",    "fromenv",
+      "tryfromenv", "undefok",    "help",             "helpfull",    "helpshort",
+      "helpon",   "helpmatch",    "helppackage",      "helpxml",     "version",
+      "logtostderr", "minloglevel", "alsologtostderr", "log_dir",    "v",
+      "vmodule",  "stderrthreshold", "colorlogtostderr", "logbuflevel", "logbufsecs",
+      "max_log_size", "stop_logging_if_full_disk", "log_prefix", "log_link",
+      "drop_log_memory", "logemaillevel", "logmailer", "alsologtoemail", "log_backtrace_at",
+      "symbolize_stacktrace", "timestamp_in_logfile_name", "log_year_in_prefix",
+      "log_utc_time", "log_file_header"};
+  std::vector<gflags::CommandLineFlagInfo> flags;
+  gflags::GetAllFlags(&flags);
+  std::ostringstream out;
+  for (const gflags::CommandLineFlagInfo& flag : flags) {
+    if (kIgnored.count(flag.name)) continue;
+    out << flag.name << "=" << flag.current_value << "\n";
+  }
+  return out.str();
+}
+
+// The run's budget flags: taken from the checkpoint on resume unless given again.
+constexpr const char* kBudgetFlags[] = {"max_evals", "max_seconds"};
+
+void WriteCheckpoint(const std::string& path, const RoundsState& state,
+                     const std::string& fingerprint) {
+  Json j = Json::Object();
+  j["version"] = kVersion;
+  j["fingerprint"] = fingerprint;
+  Json budget = Json::Object();
+  for (const char* name : kBudgetFlags) {
+    std::string value;
+    if (gflags::GetCommandLineOption(name, &value)) budget[name] = value;
+  }
+  j["budget"] = budget;
+  j["kept_x"] = Numbers(state.kept_x);
+  j["kept_fresh_phi"] = state.kept_fresh_phi;
+  j["kept_followed_phi"] = state.kept_followed_phi;
+  j["evaluations"] = state.evaluations;
+  j["newton_iterations"] = state.newton_iterations;
+  j["failed_evaluations"] = state.failed_evaluations;
+  j["rounds"] = state.rounds;
+  j["next_iteration"] = state.next_iteration;
+  j["seconds"] = state.seconds;
+  j["candidate_phi"] = Numbers(state.candidate_phi);
+  j["candidate_fresh_phi"] = Numbers(state.candidate_fresh_phi);
+  j["kept_candidate"] = state.kept_candidate;
+  j["finished"] = state.finished;
+  j["stop_reason"] = state.stop_reason;
+  Json history = Json::Array();
+  for (const IterationRecord& r : state.history) {
+    Json h = Json::Array();
+    for (double v : {static_cast<double>(r.iteration), static_cast<double>(r.evaluations),
+                     static_cast<double>(r.newton_iterations), r.seconds, r.phi, r.zeta, r.psi,
+                     r.gradient_norm, r.step})
+      h.Append(v);
+    history.Append(h);
+  }
+  j["history"] = history;
+  WriteJsonFile(path, j, 0);
+}
+
+void ApplyCheckpointFlags(const std::string& path) {
+  Json j;
+  try {
+    j = ReadJsonFile(path);
+  } catch (const InputError& error) {
+    throw InputError("--resume", "", std::string("cannot read the checkpoint: ") + error.what(),
+                     "resume a run that wrote one (ergo_optimize --out=DIR writes "
+                     "DIR.checkpoint.json after every round)");
+  }
+  std::istringstream lines(GetString(j, "fingerprint", path));
+  std::string line;
+  while (std::getline(lines, line)) {
+    const size_t equals = line.find('=');
+    if (equals == std::string::npos) continue;
+    const std::string name = line.substr(0, equals), value = line.substr(equals + 1);
+    gflags::CommandLineFlagInfo info;
+    if (!gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
+      throw InputError("--resume", "", "the checkpoint names a flag this tool does not have (--" +
+                                           name + ")",
+                       "resume with the ergo_optimize that wrote it");
+    }
+    if (!info.is_default && info.current_value != value) {
+      throw InputError("--" + name, "",
+                       "is " + info.current_value + " here but " + value + " in the checkpoint " +
+                           path,
+                       "leave it out: --resume takes the checkpoint's flags");
+    }
+    gflags::SetCommandLineOption(name.c_str(), value.c_str());
+  }
+  // The budget of the run that wrote it, unless this command line gives another.
+  if (const Json* budget = j.Find("budget")) {
+    for (const char* name : kBudgetFlags) {
+      const Json* value = budget->Find(name);
+      gflags::CommandLineFlagInfo info;
+      if (value && gflags::GetCommandLineFlagInfo(name, &info) && info.is_default)
+        gflags::SetCommandLineOption(name, value->AsString().c_str());
+    }
+  }
+}
+
+RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerprint) {
+  Json j;
+  try {
+    j = ReadJsonFile(path);
+  } catch (const InputError& error) {
+    throw InputError("--resume", "", std::string("cannot read the checkpoint: ") + error.what(),
+                     "resume a run that wrote one (ergo_optimize --out=DIR writes "
+                     "DIR.checkpoint.json after every round)");
+  }
+  const std::string source = path;
+  if (GetNumber(j, "version", source) != kVersion)
+    throw InputError(path, "", "is a checkpoint of another version", "start the run afresh");
+  const std::string written = GetString(j, "fingerprint", source);
+  if (written != fingerprint) {
+    // Name the first flag that differs.
+    std::istringstream a(written), b(fingerprint);
+    std::string line_a, line_b;
+    while (std::getline(a, line_a) && std::getline(b, line_b) && line_a == line_b) {
+    }
+    throw InputError("--resume", "",
+                     "the checkpoint " + path + " was written with other flags (it has '" +
+                         line_a + "', this run '" + line_b + "')",
+                     "resume with the flags of the run that wrote it");
+  }
+  RoundsState state;
+  const std::vector<double> x = ToVector(GetMember(j, "kept_x", source));
+  state.kept_x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+  state.kept_fresh_phi = GetNumber(j, "kept_fresh_phi", source);
+  state.kept_followed_phi = GetNumber(j, "kept_followed_phi", source);
+  state.evaluations = static_cast<long>(GetNumber(j, "evaluations", source));
+  state.newton_iterations = static_cast<long>(GetNumber(j, "newton_iterations", source));
+  state.failed_evaluations = static_cast<long>(GetNumber(j, "failed_evaluations", source));
+  state.rounds = static_cast<int>(GetNumber(j, "rounds", source));
+  state.next_iteration = static_cast<int>(GetNumber(j, "next_iteration", source));
+  state.seconds = GetNumber(j, "seconds", source);
+  state.candidate_phi = ToVector(GetMember(j, "candidate_phi", source));
+  state.candidate_fresh_phi = ToVector(GetMember(j, "candidate_fresh_phi", source));
+  state.kept_candidate = static_cast<int>(GetNumber(j, "kept_candidate", source));
+  state.finished = GetBool(j, "finished", source);
+  state.stop_reason = GetString(j, "stop_reason", source);
+  const Json& history = GetMember(j, "history", source);
+  for (size_t i = 0; i < history.size(); ++i) {
+    const std::vector<double> h = ToVector(history[i]);
+    if (h.size() != 9) throw InputError(path, "", "has a malformed history entry", "start afresh");
+    IterationRecord r;
+    r.iteration = static_cast<int>(h[0]);
+    r.evaluations = static_cast<long>(h[1]);
+    r.newton_iterations = static_cast<long>(h[2]);
+    r.seconds = h[3];
+    r.phi = h[4];
+    r.zeta = h[5];
+    r.psi = h[6];
+    r.gradient_norm = h[7];
+    r.step = h[8];
+    state.history.push_back(r);
+  }
+  return state;
+}
+
+}  // namespace ergo
