@@ -45,14 +45,14 @@ struct ChairScenarioOptions {
   // Contact stiffness κ, Pa/m (contact pressure per metre of penetration; mesh-independent):
   // calibrated for 0.3 mm max penetration on the flat start of the quick preset;
   // ergo_optimize can recalibrate (--contact_stiffness=auto).
-  double contact_stiffness = 8e7;
+  double contact_stiffness = 8.8e7;
   double free_fall_mass_scale = 1e3;  // α of K + αM in free fall, 1/s² (paper: 1e3 chair)
   // One variable per designed vertex, moving the surface along its initial normals through
   // the Helmholtz filter (no tangential motion that could tangle the top, no feature finer
   // than the filter radius).
   DesignSpaceOptions design_space;  // filtered normal displacement; radii from the skin
-  UserBodyInput user_body;        // replaces the generated body when set
-  UserSupportInput user_support;  // replaces the block when set
+  UserBodyInput user_body;          // replaces the generated body when set
+  UserSupportInput user_support;    // replaces the block when set
 
   // "quick" or "paper"; throws InputError for anything else.
   static ChairScenarioOptions FromPreset(const std::string& preset);

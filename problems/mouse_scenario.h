@@ -44,9 +44,9 @@ struct MouseScenarioOptions {
   std::string lock = "tx,tz,rx,ry,rz";  // vertical translation only
   // Contact stiffness κ, Pa/m (mesh-independent), calibrated for 0.3 mm max penetration on
   // the quick preset.
-  double contact_stiffness = 2.8e8;
+  double contact_stiffness = 7.8e7;
   double free_fall_mass_scale = 1e4;  // paper: 1e4 mouse
-  DesignSpaceOptions design_space;  // filtered normal displacement; radii from the skin
+  DesignSpaceOptions design_space;    // filtered normal displacement; radii from the skin
   UserBodyInput user_body;
   UserSupportInput user_support;
 

@@ -37,9 +37,9 @@ struct ShoeScenarioOptions {
   std::string lock = "tx,tz,ry,rz";  // vertical translation and pitch (about x) only
   // Contact stiffness κ, Pa/m (mesh-independent), calibrated for 0.3 mm max penetration on
   // the quick preset's flat sole.
-  double contact_stiffness = 8e8;
+  double contact_stiffness = 1.4e9;
   double free_fall_mass_scale = 1e6;  // paper: 1e6 shoe
-  DesignSpaceOptions design_space;  // filtered normal displacement; radii from the skin
+  DesignSpaceOptions design_space;    // filtered normal displacement; radii from the skin
   UserBodyInput user_body;
   UserSupportInput user_support;
 

@@ -1,6 +1,7 @@
 #include "solvers/design_objective.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace ergo {
 
@@ -39,9 +40,22 @@ double DesignObjective::BoxHalfWidthForMove(double move) const {
 
 std::string DesignObjective::Describe() const {
   const SupportParameterization& p = problem_->parameterization();
-  return std::to_string(p.active_vertices().size()) + " support vertices, " +
-         (p.kind() == DesignParameterization::kPositions ? "positions" : "normal displacements") +
-         ", γ = " + std::to_string(problem_->options().gamma);
+  std::ostringstream space;
+  switch (p.kind()) {
+    case DesignParameterization::kPositions:
+      space << "positions";
+      break;
+    case DesignParameterization::kNormalDisplacement:
+      space << "normal displacements";
+      break;
+    case DesignParameterization::kFiltered:
+      space << "filtered normal displacements (radius " << 1e3 * p.filter_radius() << " mm)";
+      break;
+  }
+  std::ostringstream gamma;
+  gamma << problem_->options().gamma;
+  return std::to_string(p.active_vertices().size()) + " support vertices, " + space.str() +
+         ", γ = " + gamma.str();
 }
 
 }  // namespace ergo

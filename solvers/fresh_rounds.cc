@@ -29,12 +29,14 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   };
   RoundsResult out;
-  const double initial_phi = resume && !resume->history.empty() ? resume->history.front().phi
-                                                                 : phi0_fresh;
+  const double initial_phi =
+      resume && !resume->history.empty() ? resume->history.front().phi : phi0_fresh;
 
   while (!state.finished) {
     const long remaining = budget.max_evaluations - state.evaluations;
-    const int checks = std::max(1, options.candidates);
+    // A small budget keeps most of itself for the optimiser: at most a quarter for checks.
+    const int checks =
+        static_cast<int>(std::clamp<long>(options.candidates, 1, std::max<long>(1, remaining / 4)));
     if (remaining <= 1) {
       state.finished = true;
       state.stop_reason = "budget: " + std::to_string(budget.max_evaluations) + " evaluations";
@@ -52,10 +54,10 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     // One round: the optimiser on its own path from the kept design, leaving room for the
     // fresh checks of its candidates.
     Budget round = budget;
-    round.max_evaluations = static_cast<int>(std::max<long>(
-        1, options.round_evaluations > 0
-               ? std::min<long>(options.round_evaluations, remaining - checks)
-               : remaining - checks));
+    round.max_evaluations = static_cast<int>(
+        std::max<long>(1, options.round_evaluations > 0
+                              ? std::min<long>(options.round_evaluations, remaining - checks)
+                              : remaining - checks));
     if (budget.max_seconds > 0) round.max_seconds = std::max(1e-3, budget.max_seconds - seconds());
     RunControl round_control = control;
     const long used_before = state.evaluations, newton_before = state.newton_iterations;
@@ -76,7 +78,8 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     state.evaluations += r.evaluations;
     state.newton_iterations += r.newton_iterations;
     state.failed_evaluations += r.failed_evaluations;
-    if (!r.history.empty()) state.next_iteration = iteration_before + r.history.back().iteration + 1;
+    if (!r.history.empty())
+      state.next_iteration = iteration_before + r.history.back().iteration + 1;
     const bool interrupted = r.stop_reason.find("interrupt") != std::string::npos;
     if (!r.ok) {
       state.finished = !interrupted;
@@ -123,7 +126,8 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     } else if (state.evaluations >= budget.max_evaluations - 1) {
       state.finished = true;
       state.stop_reason = "budget: " + std::to_string(budget.max_evaluations) + " evaluations";
-    } else if (r.stop_reason.find("budget: ") == 0 && r.stop_reason.find(" s") != std::string::npos) {
+    } else if (r.stop_reason.find("budget: ") == 0 &&
+               r.stop_reason.find(" s") != std::string::npos) {
       state.finished = true;
       state.stop_reason = r.stop_reason;
     }

@@ -51,7 +51,8 @@ Eigen::Matrix3d SurfaceContacts::TranslationStiffness() const {
   // vertices of a support spring; by translation invariance of E the summed feature block
   // equals the (point, point) block in both cases.
   Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
-  for (const Contact& contact : skin.contacts) stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
+  for (const Contact& contact : skin.contacts)
+    stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
   if (support_springs) {
     for (const Contact& contact : support.contacts)
       stiffness += contact.spring.hessian.topLeftCorner<3, 3>();
@@ -102,12 +103,14 @@ void SurfaceContact::MoveSkin(const Vertices& body_positions, const Support& sup
     std::vector<bool> near(static_cast<size_t>(support.mesh().vertices.rows()));
     for (Eigen::Index j = 0; j < support.mesh().vertices.rows(); ++j) {
       const Eigen::RowVector3d x = support.mesh().vertices.row(j);
-      near[j] = (x.array() >= (lo - margin).array()).all() && (x.array() <= (hi + margin).array()).all();
+      near[j] =
+          (x.array() >= (lo - margin).array()).all() && (x.array() <= (hi + margin).array()).all();
     }
     options_.skin_share = ContactSkinShare(skin_areas_, support.vertex_areas(), near);
   }
   Vertices positions(body_ids_.size(), 3);
-  for (Eigen::Index l = 0; l < body_ids_.size(); ++l) positions.row(l) = body_positions.row(body_ids_[l]);
+  for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
+    positions.row(l) = body_positions.row(body_ids_[l]);
   const Eigen::Index support_count = support.mesh().vertices.rows();
   if (support.shape() != support_shape_ || clearance_.size() != support_count) {
     clearance_ = Eigen::VectorXd::Zero(support_count);
@@ -145,8 +148,8 @@ ContactSet SurfaceContact::SupportSprings(const Support& support, bool with_hess
     contact.point = static_cast<int>(j);
     contact.anchor = hint;
     contact.stiffness = k;
-    contact.spring = EvaluateSlidingAnchor(hint.feature.type, p, skin_.Positions(hint.feature), k,
-                                           with_hessian);
+    contact.spring =
+        EvaluateSlidingAnchor(hint.feature.type, p, skin_.Positions(hint.feature), k, with_hessian);
     found[j] = contact;
   }
   for (Eigen::Index j = 0; j < count; ++j) {
@@ -170,7 +173,11 @@ void SurfaceContact::Evaluate(const Vertices& body_positions, const Support& sup
   c.support = SupportSprings(support, with_hessian);
   c.support_springs = options_.support_springs;
   c.energy = c.skin.energy + (c.support_springs ? c.support.energy : 0.0);
-  c.max_penetration = std::max(c.skin.max_penetration, c.support.max_penetration);
+  // What κ controls: one-way, the support's samples push nothing, so how far a convex support
+  // pokes between skin vertices is geometry, not stiffness (a calibration could not reach it).
+  c.max_penetration = c.support_springs
+                          ? std::max(c.skin.max_penetration, c.support.max_penetration)
+                          : c.skin.max_penetration;
 
   // Per-vertex forces: each spring pushes its point and, oppositely, its feature's vertices.
   c.skin_force = Vertices::Zero(body_ids_.size(), 3);
@@ -204,7 +211,8 @@ double SurfaceContact::Energy(const Vertices& body_positions, const Support& sup
   Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
     stiffness[body_ids_[l]] = 0.5 * options_.stiffness * SkinShare(options_) * skin_areas_[l];
-  const double skin = EvaluateContacts(support, body_positions, body_ids_, stiffness, false, hints).energy;
+  const double skin =
+      EvaluateContacts(support, body_positions, body_ids_, stiffness, false, hints).energy;
   return options_.support_springs ? skin + SupportSprings(support, false).energy : skin;
 }
 

@@ -45,7 +45,8 @@ struct SurfaceContactOptions {
   double skin_share = 0;
   // false: the support's vertices inside the skin are sampled for the score (p = κg there)
   // but exert no force, and the skin's springs carry the whole quadrature (α = 1): the
-  // paper's uni-directional equilibrium with its bi-directional score, under one pressure law.
+  // paper's uni-directional equilibrium with its bi-directional score, under one pressure law
+  // (the equilibrium's default, EquilibriumOptions::contact_support_springs).
   bool support_springs = true;
 };
 
@@ -77,10 +78,11 @@ struct SurfaceContacts {
   // the score-only support samples.
   double skin_share = 0.5, support_share = 0.5;
   bool support_springs = true;  // whether the support springs act in the equilibrium
-  double energy = 0;           // J
-  double max_penetration = 0;  // m, over both kinds
+  double energy = 0;            // J
+  double max_penetration = 0;   // m: the skin's, and the support's too when its springs push
 
-  int springs() const { return skin.size() + support.size(); }
+  // Springs that push in the equilibrium (one-way, the support's samples are scored only).
+  int springs() const { return skin.size() + (support_springs ? support.size() : 0); }
   // Σ of the contact forces on the body, N.
   Eigen::Vector3d TotalForceOnBody() const;
   // Skin vertices inside the support (p > 0).

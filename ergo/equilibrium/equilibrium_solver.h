@@ -35,9 +35,11 @@ struct EquilibriumOptions {
   // α, the skin's share of the contact quadrature (SurfaceContactOptions::skin_share); 0:
   // chosen from the meshes at the first solve (ContactSkinShare).
   double contact_skin_share = 0;
-  // false: support vertices inside the skin are scored but push nothing (the paper's
-  // uni-directional equilibrium; SurfaceContactOptions::support_springs).
-  bool contact_support_springs = true;
+  // Springs of support vertices inside the skin in the equilibrium too (two-way); false, the
+  // default: they are scored but push nothing, the paper's uni-directional equilibrium with
+  // its bi-directional score under one pressure law (SurfaceContactOptions::support_springs;
+  // DESIGN.md §8 has the measurements that chose it).
+  bool contact_support_springs = false;
   // Converged when ResidualNorm ≤ relative_tolerance · |weight + external force|.
   double relative_tolerance = 1e-8;
   int max_iterations = 100;
@@ -85,9 +87,9 @@ struct EquilibriumResult {
   int pcg_iterations = 0;   // conjugate-gradient iterations on reused factors
   double residual = 0;      // final ResidualNorm, N
   double relative_residual = 0;
-  double energy = 0;  // J
+  double energy = 0;           // J
   int contact_vertices = 0;    // skin vertices inside the support
-  int contact_springs = 0;     // springs of both kinds
+  int contact_springs = 0;     // springs that push (both kinds when two-way)
   double max_penetration = 0;  // m
   Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();  // Σ contact forces on the body, N
   // Seconds spent, by part.

@@ -46,7 +46,7 @@ TEST(Problems, ChairQuickPresetBuildsAndBalancesItsWeight) {
   }
   const double cells_x = options.block.width / options.block.top_spacing;
   EXPECT_GE(flat_top, 0.9 * cells_x * cells_x * (0.5 - options.block.front_radius) / 0.5);
-  EXPECT_EQ(scenario.design.parameterization, DesignParameterization::kNormalDisplacement);
+  EXPECT_EQ(scenario.design.parameterization, DesignParameterization::kFiltered);
 
   // Vertical translation and pitch free (paper §5.1 frees all rotations; yaw is a zero mode
   // on a frictionless support, see ChairScenarioOptions::lock).

@@ -25,9 +25,15 @@ DEFINE_string(contact_stiffness, "scenario",
               "spring is κ times its area), auto (calibrate to --target_penetration), or "
               "scenario (the preset's)");
 DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
-DEFINE_bool(support_springs, true,
-            "two-way contact: support vertices inside the skin push it (false: they are scored "
-            "but push nothing, the paper's uni-directional equilibrium)");
+DEFINE_bool(support_springs, false,
+            "two-way contact: support vertices inside the skin push it too (default false: they "
+            "are scored but push nothing, the paper's uni-directional equilibrium)");
+DEFINE_int32(robust_placements, 1,
+             "optimise the mean score over K placements of the body (1, 3 or 5: centred, and "
+             "±--robust_shift_mm along the longer or both horizontal axes), each with its own "
+             "equilibrium and adjoint, in parallel threads");
+DEFINE_double(robust_shift_mm, 3,
+              "--robust_placements: the shift of the off-centre placements, mm");
 DEFINE_string(placement, "followed",
               "where the optimiser's evaluations start their equilibria: followed (warm from the "
               "nearest design evaluated before, the paper's; a path starts placed afresh and "
@@ -50,12 +56,27 @@ double ParseNonNegative(const std::string& text, const std::string& flag) {
 
 }  // namespace
 
+int RobustPlacementsFlag() {
+  if (FLAGS_robust_placements != 1 && FLAGS_robust_placements != 3 &&
+      FLAGS_robust_placements != 5) {
+    throw InputError("--robust_placements", "",
+                     "is " + std::to_string(FLAGS_robust_placements) + "; it must be 1, 3 or 5",
+                     "1 = the centred placement only");
+  }
+  RequireInRange("robust_shift_mm", FLAGS_robust_shift_mm, 0.01, 50, "millimetres, e.g. 3");
+  return FLAGS_robust_placements;
+}
+
+double RobustShiftFlag() { return 1e-3 * FLAGS_robust_shift_mm; }
+
 void ApplyDesignFlags(Scenario* scenario) {
+  RobustPlacementsFlag();
   DesignOptions& design = scenario->design;
   RequireInRange("gamma_power", static_cast<long>(FLAGS_gamma_power), -30, 30, "e.g. -1");
   RequireInRange("taubin_lambda", FLAGS_taubin_lambda, 1e-6, 1, "e.g. 0.5");
   RequireInRange("taubin_mu", FLAGS_taubin_mu, -1, -1e-6, "e.g. -0.53");
-  RequireInRange("taubin_iterations", static_cast<long>(FLAGS_taubin_iterations), 1, 1000, "e.g. 1");
+  RequireInRange("taubin_iterations", static_cast<long>(FLAGS_taubin_iterations), 1, 1000,
+                 "e.g. 1");
   RequireInRange("target_penetration", FLAGS_target_penetration, 1e-6, 0.02,
                  "metres, e.g. 3e-4 (0.3 mm)");
   if (FLAGS_exponent < 2 || FLAGS_exponent > 4)

@@ -19,12 +19,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,11 +32,13 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include "ergo/design/placement_checks.h"
 #include "ergo/mesh/input_error.h"
 #include "solvers/design_objective.h"
 #include "solvers/fresh_rounds.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
+#include "solvers/robust_design_objective.h"
 #include "tools/common/child_process.h"
 #include "tools/common/design_flags.h"
 #include "tools/common/flag_checks.h"
@@ -169,11 +171,10 @@ const IterationRecord* FirstReaching(const OptimizerResult& result, double targe
 
 void PrintTable(std::vector<OptimizerResult> results) {
   // Ranked by the fresh reduction: what a person placed on each kept design gets.
-  std::stable_sort(results.begin(), results.end(),
-                   [](const OptimizerResult& a, const OptimizerResult& b) {
-                     return (a.ok ? a.ReductionPercent() : -1e300) >
-                            (b.ok ? b.ReductionPercent() : -1e300);
-                   });
+  std::stable_sort(
+      results.begin(), results.end(), [](const OptimizerResult& a, const OptimizerResult& b) {
+        return (a.ok ? a.ReductionPercent() : -1e300) > (b.ok ? b.ReductionPercent() : -1e300);
+      });
   const std::string target = std::to_string(static_cast<int>(FLAGS_target_reduction)) + "%";
   std::cout << "\n"
             << std::left << std::setw(13) << "optimizer" << std::right << std::setw(13)
@@ -188,9 +189,8 @@ void PrintTable(std::vector<OptimizerResult> results) {
         std::isfinite(r.followed_phi) ? 100 * (1 - r.followed_phi / r.initial_phi) : NAN;
     std::cout << std::left << std::setw(13) << r.optimizer << std::right << std::setprecision(5)
               << std::setw(13) << (r.ok ? r.best_phi : 0.0) << std::fixed << std::setprecision(1)
-              << std::setw(10) << r.ReductionPercent() << std::setw(11) << followed
-              << std::setw(7) << r.evaluations
-              << std::setw(8) << r.newton_iterations << std::setw(9) << r.seconds
+              << std::setw(10) << r.ReductionPercent() << std::setw(11) << followed << std::setw(7)
+              << r.evaluations << std::setw(8) << r.newton_iterations << std::setw(9) << r.seconds
               << std::defaultfloat << std::setw(14)
               << (reached ? std::to_string(reached->evaluations) : "-") << std::setw(15)
               << (reached ? std::to_string(reached->newton_iterations) : "-") << "  "
@@ -198,7 +198,7 @@ void PrintTable(std::vector<OptimizerResult> results) {
   }
 }
 
-void Plot(const std::string& out_dir) {
+void Plot(const std::string& out_dir, const std::string& final_dir) {
   if (!FLAGS_plot) return;
   const std::string script = !FLAGS_plot_script.empty()
                                  ? FLAGS_plot_script
@@ -222,7 +222,7 @@ void Plot(const std::string& out_dir) {
               << plotted.Describe() << "; compare.png not written\n";
     return;
   }
-  std::cout << "wrote " << out_dir << "/compare.png\n";
+  std::cout << "wrote " << final_dir << "/compare.png\n";
 }
 
 int Compare() {
@@ -271,11 +271,22 @@ int Compare() {
     std::cerr << "ergo_compare: the initial equilibrium failed: " << start.message << "\n";
     return 1;
   }
+  // The objective every optimiser minimises (the mean over placements when robust), and the
+  // fresh score their kept designs must earn, as ergo_optimize poses them.
+  const std::vector<Placement> robust =
+      RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
   RoundsProblem rounds_problem;
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
-    const DesignEvaluation e = DesignProblem(fresh).Evaluate(x, false);
-    return e.ok ? e.phi : std::numeric_limits<double>::quiet_NaN();
+    const std::vector<DesignEvaluation> placed =
+        EvaluatePlacements(fresh, x, robust, &StopOnSignals::flag());
+    double mean = 0;
+    for (const DesignEvaluation& e : placed) {
+      if (!e.ok) return std::numeric_limits<double>::quiet_NaN();
+      mean += e.phi / static_cast<double>(placed.size());
+    }
+    return mean;
   };
+  const double phi0 = robust.size() > 1 ? rounds_problem.fresh_score(x0) : start.phi;
   RoundsOptions rounds_options;
   rounds_options.round_evaluations = FLAGS_round_evals;
   rounds_options.candidates = FLAGS_candidates;
@@ -291,6 +302,7 @@ int Compare() {
     // Every optimiser from a fresh problem: no warm starts leak between them.
     const DesignProblem base = scenario.MakeProblem();
     rounds_problem.make_objective = [&]() -> std::unique_ptr<Objective> {
+      if (robust.size() > 1) return std::make_unique<RobustDesignObjective>(base, robust);
       return std::make_unique<DesignObjective>(base);
     };
     std::cout << "\n" << name << " on " << DesignObjective(base).Describe() << "\n";
@@ -307,22 +319,22 @@ int Compare() {
     }
     OptimizerResult result;
     try {
-      result = MinimizeInRounds(*optimizer, rounds_problem, x0, start.phi, budget, control,
-                                rounds_options)
-                   .result;
+      result =
+          MinimizeInRounds(*optimizer, rounds_problem, x0, phi0, budget, control, rounds_options)
+              .result;
     } catch (const std::exception& e) {
       crashed = true;
       result.optimizer = name;
       result.stop_reason = std::string("crashed: ") + e.what();
     }
     std::cout << result.BriefReport() << " (kept design placed afresh; on its path "
-              << (std::isfinite(result.followed_phi) ? result.followed_phi : start.phi) << ")\n";
+              << (std::isfinite(result.followed_phi) ? result.followed_phi : phi0) << ")\n";
     WriteHistoryCsv(out_dir + "/" + name + "_history.csv", result);
     results.push_back(std::move(result));
   }
   WriteComparisonCsv(out_dir + "/compare.csv", results);
   PrintTable(results);
-  if (FLAGS_plot && !StopOnSignals::stopped()) Plot(out_dir);
+  if (FLAGS_plot && !StopOnSignals::stopped()) Plot(out_dir, output.final_path());
   std::string error;
   if (!output.Commit(&error)) {
     std::cerr << "ergo_compare: " << error << "\n";

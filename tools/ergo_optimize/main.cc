@@ -45,10 +45,11 @@
 #endif
 
 DEFINE_string(
-    optimizer, "paper-ncg",
+    optimizer, "nlopt-lbfgs",
     "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, nlopt-lbfgs");
-DEFINE_int32(max_evals, 100,
-             "budget: φ evaluations (equilibrium solves), probes and fresh checks included");
+DEFINE_int32(max_evals, 40,
+             "budget: φ evaluations (each an equilibrium per placement of the objective), probes "
+             "and fresh checks included");
 DEFINE_double(max_seconds, 0, "budget: wall seconds; 0 = unlimited");
 DEFINE_string(out, "ergo_out", "output directory (created if missing; replaced as a whole)");
 DEFINE_int32(post_smoothing, 0,
@@ -63,11 +64,6 @@ DEFINE_int32(round_evals, 40,
              "then its best designs are placed afresh and the best starts the next round; 0 = "
              "one round with the whole budget");
 DEFINE_int32(candidates, 3, "designs of each round placed afresh before one is kept");
-DEFINE_int32(robust_placements, 1,
-             "optimise the mean score over K placements of the body (1, 3 or 5: centred, and "
-             "±--robust_shift_mm along the longer or both horizontal axes), each with its own "
-             "equilibrium and adjoint, in parallel threads");
-DEFINE_double(robust_shift_mm, 3, "--robust_placements: the shift of the off-centre placements, mm");
 DEFINE_string(resume, "",
               "continue the run whose output directory is DIR from its checkpoint "
               "(DIR.checkpoint.json), with its flags; --out defaults to DIR");
@@ -98,13 +94,7 @@ void ValidateRunFlags() {
   RequireInRange("candidates", static_cast<long>(FLAGS_candidates), 1, 10, "e.g. 3");
   RequireInRange("checkpoint_every", static_cast<long>(FLAGS_checkpoint_every), 0, 100000000,
                  "evaluations, e.g. 1 (every round); 0 = none");
-  if (FLAGS_robust_placements != 1 && FLAGS_robust_placements != 3 &&
-      FLAGS_robust_placements != 5) {
-    throw InputError("--robust_placements", "",
-                     "is " + std::to_string(FLAGS_robust_placements) + "; it must be 1, 3 or 5",
-                     "1 = the centred placement only");
-  }
-  RequireInRange("robust_shift_mm", FLAGS_robust_shift_mm, 0.01, 50, "millimetres, e.g. 3");
+  RobustPlacementsFlag();
   RequireInRange("placement_shift_mm", FLAGS_placement_shift_mm, 0, 50, "millimetres, e.g. 3");
   RequireInRange("placement_tilt_deg", FLAGS_placement_tilt_deg, 0, 30, "degrees, e.g. 1");
   std::string error;
@@ -145,8 +135,8 @@ void Plot(const std::string& dir) {
     return;
   }
   // An argument vector, never a shell: --out may hold any character.
-  const std::vector<std::string> command = {
-      python, std::string(ERGO_TOOLS_DIR) + "/plot_results.py", dir};
+  const std::vector<std::string> command = {python,
+                                            std::string(ERGO_TOOLS_DIR) + "/plot_results.py", dir};
   const ChildProcessResult plotted = RunChildProcess(command);
   if (!plotted.ok())
     std::cerr << "warning: pictures not written: " << CommandLineForDisplay(command) << " "
@@ -190,7 +180,7 @@ int Run() {
   summary.scenario = &scenario;
   summary.optimizer = FLAGS_optimizer;
   summary.placement = PlacementName(scenario.design.placement);
-  summary.robust_placements = FLAGS_robust_placements;
+  summary.robust_placements = RobustPlacementsFlag();
   summary.gamma = gamma;
   DesignEvaluation initial_evaluation = first;
   initial_evaluation.phi = first.zeta + gamma * first.psi;  // φ with the γ just chosen
@@ -205,7 +195,7 @@ int Run() {
 
   // The objective, and the score a kept design must earn placed afresh.
   const std::vector<Placement> robust =
-      RobustPlacements(*scenario.body, FLAGS_robust_placements, 1e-3 * FLAGS_robust_shift_mm);
+      RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
   RoundsProblem rounds_problem;
   rounds_problem.make_objective = [&]() -> std::unique_ptr<Objective> {
     DesignProblem path(problem);
@@ -226,8 +216,8 @@ int Run() {
   double phi0_objective = phi0;
   if (robust.size() > 1) {
     phi0_objective = rounds_problem.fresh_score(x0);
-    std::cout << "objective: mean over " << robust.size() << " placements; at x₀ "
-              << phi0_objective << "\n";
+    std::cout << "objective: mean over " << robust.size() << " placements; at x₀ " << phi0_objective
+              << "\n";
   }
 
   Budget budget;
@@ -316,12 +306,12 @@ int Run() {
   // The optimiser's own value of the kept design, and its report on that path when the
   // path's state is at hand (not after a resume, nor for a post-smoothed design).
   const bool on_path = kept == rounds.kept_x;
-  summary.followed_phi = on_path ? rounds.kept_followed_phi : std::numeric_limits<double>::quiet_NaN();
+  summary.followed_phi =
+      on_path ? rounds.kept_followed_phi : std::numeric_limits<double>::quiet_NaN();
   if (rounds.kept_path && on_path) {
-    DesignProblem& path =
-        robust.size() == 1
-            ? static_cast<DesignObjective&>(*rounds.kept_path).problem()
-            : static_cast<RobustDesignObjective&>(*rounds.kept_path).problem(0);
+    DesignProblem& path = robust.size() == 1
+                              ? static_cast<DesignObjective&>(*rounds.kept_path).problem()
+                              : static_cast<RobustDesignObjective&>(*rounds.kept_path).problem(0);
     summary.followed = ReportDesign(path, kept);
     // The robust objective's value is a mean over placements; report the centred path's.
     if (robust.size() > 1 && summary.followed.evaluation.ok)
@@ -349,8 +339,9 @@ int Run() {
       outcome.score = at_kept[i].phi;
       summary.checks.push_back(outcome);
       std::cout << "placement " << placements[i].name << ": "
-                << (outcome.ok ? std::to_string(outcome.ReductionPercent()) + " % below the "
-                                                                              "initial design"
+                << (outcome.ok ? std::to_string(outcome.ReductionPercent()) +
+                                     " % below the "
+                                     "initial design"
                                : "did not converge (" + outcome.message + ")")
                 << "\n";
     }
