@@ -50,9 +50,12 @@ struct ChairScenarioOptions {
   // One variable per designed vertex, moving the surface along its initial normals through
   // the Helmholtz filter (no tangential motion that could tangle the top, no feature finer
   // than the filter radius).
-  DesignSpaceOptions design_space;  // filtered normal displacement; radii from the skin
-  UserBodyInput user_body;          // replaces the generated body when set
-  UserSupportInput user_support;    // replaces the block when set
+  // Filtered normal displacements, filter radius from the skin; the pressure smoothing has a
+  // physical radius (44 mm: √3 × the quick preset's skin edge near the design), the same at
+  // every resolution so that scores compare across meshes and presets.
+  DesignSpaceOptions design_space{DesignParameterization::kFiltered, 0, 0.044};
+  UserBodyInput user_body;        // replaces the generated body when set
+  UserSupportInput user_support;  // replaces the block when set
 
   // "quick" or "paper"; throws InputError for anything else.
   static ChairScenarioOptions FromPreset(const std::string& preset);

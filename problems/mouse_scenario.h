@@ -46,7 +46,10 @@ struct MouseScenarioOptions {
   // the quick preset.
   double contact_stiffness = 7.8e7;
   double free_fall_mass_scale = 1e4;  // paper: 1e4 mouse
-  DesignSpaceOptions design_space;    // filtered normal displacement; radii from the skin
+  // Filtered normal displacements, filter radius from the skin; the pressure smoothing has a
+  // physical radius (9 mm: √3 × the quick preset's skin edge near the design), the same at
+  // every resolution so that scores compare across meshes and presets.
+  DesignSpaceOptions design_space{DesignParameterization::kFiltered, 0, 0.009};
   UserBodyInput user_body;
   UserSupportInput user_support;
 

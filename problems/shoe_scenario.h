@@ -39,7 +39,10 @@ struct ShoeScenarioOptions {
   // the quick preset's flat sole.
   double contact_stiffness = 1.4e9;
   double free_fall_mass_scale = 1e6;  // paper: 1e6 shoe
-  DesignSpaceOptions design_space;    // filtered normal displacement; radii from the skin
+  // Filtered normal displacements, filter radius from the skin; the pressure smoothing has a
+  // physical radius (12 mm: √3 × the quick preset's skin edge near the design), the same at
+  // every resolution so that scores compare across meshes and presets.
+  DesignSpaceOptions design_space{DesignParameterization::kFiltered, 0, 0.012};
   UserBodyInput user_body;
   UserSupportInput user_support;
 

@@ -38,7 +38,7 @@ struct EquilibriumOptions {
   // Springs of support vertices inside the skin in the equilibrium too (two-way); false, the
   // default: they are scored but push nothing, the paper's uni-directional equilibrium with
   // its bi-directional score under one pressure law (SurfaceContactOptions::support_springs;
-  // DESIGN.md §8 has the measurements that chose it).
+  // ergo/design/README.md has the measurements that chose it).
   bool contact_support_springs = false;
   // Converged when ResidualNorm ≤ relative_tolerance · |weight + external force|.
   double relative_tolerance = 1e-8;

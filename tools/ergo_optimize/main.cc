@@ -69,7 +69,8 @@ DEFINE_string(resume, "",
               "(DIR.checkpoint.json), with its flags; --out defaults to DIR");
 DEFINE_int32(checkpoint_every, 1,
              "write DIR.checkpoint.json after a round once at least this many evaluations have "
-             "passed since the last one (rounds: --round_evals); 0 = no checkpoints");
+             "passed since the last one, and after every round that kept a new best design "
+             "(rounds: --round_evals); 0 = no checkpoints");
 DEFINE_bool(placement_checks, true,
             "score the initial and the kept design with the body placed off centre and tilted");
 DEFINE_double(placement_shift_mm, 3,
@@ -248,11 +249,16 @@ int Run() {
   const std::string checkpoint = CheckpointPath(output.final_path());
   const std::string fingerprint = RunFingerprint();
   long checkpointed = 0;
+  double checkpointed_phi = std::numeric_limits<double>::infinity();
   if (FLAGS_checkpoint_every > 0) {
     rounds_options.on_round = [&](const RoundsState& state) {
-      if (state.evaluations - checkpointed < FLAGS_checkpoint_every && !state.finished) return;
+      // Every N evaluations, at every new best design and at the end.
+      const bool new_best = state.kept_fresh_phi < checkpointed_phi;
+      if (state.evaluations - checkpointed < FLAGS_checkpoint_every && !state.finished && !new_best)
+        return;
       WriteCheckpoint(checkpoint, state, fingerprint);
       checkpointed = state.evaluations;
+      checkpointed_phi = state.kept_fresh_phi;
     };
   }
   RoundsState resumed;
