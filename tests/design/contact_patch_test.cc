@@ -23,16 +23,16 @@
 namespace ergo {
 namespace {
 
-constexpr double kSize = 0.1;      // block side, m
-constexpr double kLoad = 100;      // N on the core, besides the block's weight
+constexpr double kSize = 0.1;       // block side, m
+constexpr double kLoad = 100;       // N on the core, besides the block's weight
 constexpr double kStiffness = 1e8;  // κ, Pa/m: 0.11 mm of penetration, below the 0.5 mm row
 
 // A kSize cube of stiff tissue with a box core in its middle third (as the hollow-cube
 // fixture), `cells` per side, the bottom row of cells squeezed to 0.5 mm.
 LayeredBody FlatBottomedBlock(int cells) {
   const double half = kSize / 2;
-  TetMesh grid = MakeTetGrid({-half, -half, -half}, {half, half, half},
-                             Eigen::Vector3i(cells, cells, cells));
+  TetMesh grid =
+      MakeTetGrid({-half, -half, -half}, {half, half, half}, Eigen::Vector3i(cells, cells, cells));
   const Vertices uniform = grid.vertices;  // the core is chosen on the uniform grid
   const double first = -half + kSize / cells, squeezed = -half + 5e-4;
   for (Eigen::Index v = 0; v < grid.vertices.rows(); ++v) {
@@ -91,7 +91,7 @@ PatchResult Press(int block_cells, int support_cells, bool support_springs) {
   options.equilibrium.contact_stiffness = kStiffness;
   options.equilibrium.contact_support_springs = support_springs;
   options.equilibrium.relative_tolerance = 1e-9;  // round-off of a 1 GPa block: ~1e-10
-  options.pressure = {3, 1.0, 0.04};  // Helmholtz smoothing of 40 mm (only reported)
+  options.pressure = {3, 1.0, 0.04};              // Helmholtz smoothing of 40 mm (only reported)
   options.placement = DesignPlacement::kFresh;
   options.placement_gap = 1e-3;
   DesignProblem problem(block, plate, RestState(block), options);
@@ -134,7 +134,8 @@ PatchResult Press(int block_cells, int support_cells, bool support_springs) {
   }
   for (Eigen::Index j = 0; j < plate.vertices.rows(); ++j) {
     const Eigen::Vector3d p = plate.vertices.row(j);
-    if (interior(p) && p.y() > -kSize / 2 - 1e-9) support.push_back(e.pressures.support.pressure[j]);
+    if (interior(p) && p.y() > -kSize / 2 - 1e-9)
+      support.push_back(e.pressures.support.pressure[j]);
   }
   EXPECT_GT(skin.size(), 3u);
   EXPECT_GT(support.size(), 3u);
@@ -145,10 +146,10 @@ PatchResult Press(int block_cells, int support_cells, bool support_springs) {
   r.mean_pressure = sum / skin.size();
   std::cout << "block " << block_cells << " cells on support " << support_cells << " cells ("
             << (support_springs ? "two-way" : "one-way") << "): ζ " << r.zeta << " (support side "
-            << r.support_zeta << "; unsmoothed " << r.zeta_unsmoothed << "), interior pressure " << r.mean_pressure
-            << " Pa, spread skin " << r.skin_spread << " support " << r.support_spread
-            << "; Σ p·s skin " << r.skin_load << " support " << r.support_load << " N, load "
-            << r.load << " N, skin share " << r.share << "\n";
+            << r.support_zeta << "; unsmoothed " << r.zeta_unsmoothed << "), interior pressure "
+            << r.mean_pressure << " Pa, spread skin " << r.skin_spread << " support "
+            << r.support_spread << "; Σ p·s skin " << r.skin_load << " support " << r.support_load
+            << " N, load " << r.load << " N, skin share " << r.share << "\n";
   return r;
 }
 
@@ -165,8 +166,8 @@ TEST_P(DesignContactPatch, UniformPressureExactLoadAndTheSameScoreWithEachMeshIn
     // The pressure field carries the load: the springs' forces sum to it exactly (the
     // equilibrium's residual is 1e-9 of the load) — one-way the skin's Σ p·s, two-way the
     // share-weighted sum of both surfaces'.
-    const double carried = two_way ? r->share * r->skin_load + (1 - r->share) * r->support_load
-                                   : r->skin_load;
+    const double carried =
+        two_way ? r->share * r->skin_load + (1 - r->share) * r->support_load : r->skin_load;
     EXPECT_NEAR(carried, r->load, 1e-6 * r->load);
     // Each surface's own Σ p·s is a quadrature of the same field: within 2 % of the load.
     EXPECT_NEAR(r->skin_load, r->load, 0.02 * r->load);

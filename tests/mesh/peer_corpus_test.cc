@@ -74,8 +74,12 @@ TEST(Mesh, PeerCorpusEveryFileGetsAVerdictAndMessage) {
     if (exit_code > 0) {
       EXPECT_FALSE(report.issues.empty()) << text;
     }
-    if (file.verdict == "unusable") EXPECT_EQ(exit_code, 2) << text;
-    if (file.verdict == "readable-and-clean") EXPECT_NE(exit_code, 2) << text;
+    if (file.verdict == "unusable") {
+      EXPECT_EQ(exit_code, 2) << text;
+    }
+    if (file.verdict == "readable-and-clean") {
+      EXPECT_NE(exit_code, 2) << text;
+    }
     if (VerdictExitCode(file.verdict) != exit_code) {
       disagreements.push_back(file.path + "\t" + file.verdict + "\tergo exit " +
                               std::to_string(exit_code) + "\t" + report.BriefReport());

@@ -90,11 +90,12 @@ TEST(Solvers, ErgoCompareAcceptsEveryScenarioFlagfile) {
   for (const char* scene : {"shoe", "chair", "mouse"}) {
     const std::string out = testing::MakeScratchDir(std::string("ergo_compare_") + scene) + "/run";
     std::string output;
-    EXPECT_EQ(
-        RunCompare(std::string("--flagfile=") + ERGO_SOURCE_DIR + "/data/" + scene +
-                       ".flags --optimizers=steepest --max_evals=1 --progress=false --out=" + out,
-                   &output),
-        0)
+    EXPECT_EQ(RunCompare(std::string("--flagfile=") + ERGO_SOURCE_DIR + "/data/" + scene +
+                             ".flags --optimizers=steepest --max_evals=1 --robust_placements=1 "
+                             "--progress=false --out=" +
+                             out,
+                         &output),
+              0)
         << output;
     EXPECT_NE(output.find("scenario " + std::string(scene)), std::string::npos) << output;
     // The flagfiles' design space and γ (the filter regularises, so γ = 0).

@@ -50,8 +50,8 @@ TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDiffere
   std::normal_distribution<double> normal;
   Eigen::VectorXd random(x0.size());
   for (Eigen::Index i = 0; i < random.size(); ++i) random[i] = normal(rng);
-  for (const Eigen::VectorXd& d : {Eigen::VectorXd(at.gradient.normalized()),
-                                   Eigen::VectorXd(random.normalized())}) {
+  for (const Eigen::VectorXd& d :
+       {Eigen::VectorXd(at.gradient.normalized()), Eigen::VectorXd(random.normalized())}) {
     double best = INFINITY;
     for (double h : {1e-6, 1e-7, 1e-8}) {
       const double fd =

@@ -121,4 +121,21 @@ double WorstJacobianError(const VectorFunction& g, const Eigen::MatrixXd& jacobi
   return worst;
 }
 
+std::vector<Eigen::Index> CheckedComponents(const Eigen::VectorXd& gradient, int largest,
+                                            int spread) {
+  const Eigen::Index n = gradient.size();
+  std::vector<Eigen::Index> all(n);
+  for (Eigen::Index i = 0; i < n; ++i) all[i] = i;
+  if (n <= largest + spread) return all;
+  std::partial_sort(all.begin(), all.begin() + largest, all.end(),
+                    [&](Eigen::Index a, Eigen::Index b) {
+                      return std::abs(gradient[a]) > std::abs(gradient[b]);
+                    });
+  std::vector<Eigen::Index> chosen(all.begin(), all.begin() + largest);
+  const Eigen::Index stride = std::max<Eigen::Index>(1, n / std::max(1, spread));
+  for (Eigen::Index i = stride / 2; i < n; i += stride)
+    if (std::find(chosen.begin(), chosen.end(), i) == chosen.end()) chosen.push_back(i);
+  return chosen;
+}
+
 }  // namespace ergo::testing

@@ -53,4 +53,9 @@ double WorstJacobianError(const VectorFunction& g, const Eigen::MatrixXd& jacobi
                           const std::vector<double>& steps, int random_directions,
                           int max_coordinates, unsigned seed, std::string* report);
 
+// The coordinates a component-wise check visits: the `largest` with the largest |gᵢ|, then
+// about `spread` more evenly spaced; every coordinate when that would be most of them.
+std::vector<Eigen::Index> CheckedComponents(const Eigen::VectorXd& gradient, int largest,
+                                            int spread);
+
 }  // namespace ergo::testing

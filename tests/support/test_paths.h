@@ -14,4 +14,16 @@ std::string PeerMeshDir();
 // A fresh empty directory under the system temp dir, unique per call.
 std::string MakeScratchDir(const std::string& prefix);
 
+// True in the AddressSanitizer + UBSan build (tools/setup.sh test --sanitize), which runs
+// 10-20x slower: there the sanitizers look for memory and undefined-behaviour errors, so the
+// longest numerical sweeps (component-wise finite differences, long optimisation runs) check
+// a subset of what the Release run checks in full.
+constexpr bool SanitizedBuild() {
+#ifdef ERGO_SANITIZED_BUILD
+  return true;
+#else
+  return false;
+#endif
+}
+
 }  // namespace ergo::testing

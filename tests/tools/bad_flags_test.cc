@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "ergo/mesh/primitives.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/primitives.h"
 #include "tests/support/test_paths.h"
 #include "tools/common/child_process.h"
 
@@ -30,11 +30,11 @@ class ToolsBadFlags : public ::testing::Test {
   static void SetUpTestSuite() {
     scratch_ = new std::string(testing::MakeScratchDir("bad_flags"));
     // A body and supports for ergo_simulate: the ball of the simulate tests.
-    const ChildProcessResult built = RunChildProcess(
-        {std::string(ERGO_BIN_DIR) + "/ergo_body", "build", "--shape=sphere_shell",
-         "--outer_radius=0.05", "--core_radius=0.03", "--youngs_modulus=1e4",
-         "--edge_length=0.015", "--out=" + *scratch_ + "/ball"},
-        /*quiet=*/true);
+    const ChildProcessResult built =
+        RunChildProcess({std::string(ERGO_BIN_DIR) + "/ergo_body", "build", "--shape=sphere_shell",
+                         "--outer_radius=0.05", "--core_radius=0.03", "--youngs_modulus=1e4",
+                         "--edge_length=0.015", "--out=" + *scratch_ + "/ball"},
+                        /*quiet=*/true);
     ASSERT_TRUE(built.ok()) << built.Describe();
     WriteTriMesh(*scratch_ + "/slab_mm.stl",
                  MakeBox({-150, -110, -150}, {150, -60, 150}, {2, 1, 2}));
@@ -84,35 +84,42 @@ std::vector<BadFlagCase> Cases(const std::string& dir) {
       {"ergo_compare", {"--scenario=bump"}, "--out"},
       {"ergo_compare", {"--scenario=bump", "--bogus", out}, "--bogus"},
       // ergo_simulate.
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--max_iterations=0", out},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--max_iterations=0", out},
        "--max_iterations"},
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--max_iterations=-1", out},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--max_iterations=-1", out},
        "--max_iterations"},
       {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--gap=-1", out}, "--gap"},
       {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--gap=nan", out}, "--gap"},
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--target_penetration=0", out},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--target_penetration=0", out},
        "--target_penetration"},
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--target_penetration=nan", out},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--target_penetration=nan", out},
        "--target_penetration"},
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--gravity=0,0,0", out},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--gravity=0,0,0", out},
        "--gravity"},
       {"ergo_simulate",
        {simulate_body, mm_support, "--unit=mm", "--lock=tx,ty,tz,rx,ry,rz", out},
        "translation"},
       {"ergo_simulate", {simulate_body, mm_support, out}, "--unit=mm"},  // mm read as m
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--out=" + dir + "/a_file"},
+      {"ergo_simulate",
+       {simulate_body, mm_support, "--unit=mm", "--out=" + dir + "/a_file"},
        "not a directory"},
       {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--out=/proc/x"}, "/proc"},
-      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--threads=-3", out},
-       "--threads"},
+      {"ergo_simulate", {simulate_body, mm_support, "--unit=mm", "--threads=-3", out}, "--threads"},
       // ergo_body, ergo_mesh, ergo_bump.
-      {"ergo_body", {"build", "--shape=sphere_shell", "--outer_radius=0.05", "--core_radius=0.03",
-                     "--youngs_modulus=1e4", "--edge_length=nan", out},
+      {"ergo_body",
+       {"build", "--shape=sphere_shell", "--outer_radius=0.05", "--core_radius=0.03",
+        "--youngs_modulus=1e4", "--edge_length=nan", out},
        "--edge_length"},
       {"ergo_body", {"build", "--whatever=3", out}, "--whatever"},
       {"ergo_mesh", {"check", dir + "/slab_mm.stl", "--frobnicate"}, "--frobnicate"},
       {"ergo_bump", {"--edge_length=0", "--out=" + dir + "/bump.csv"}, "--edge_length"},
-      {"ergo_bump", {"--contact_stiffness=nan", "--out=" + dir + "/bump.csv"},
+      {"ergo_bump",
+       {"--contact_stiffness=nan", "--out=" + dir + "/bump.csv"},
        "--contact_stiffness"},
   };
   return cases;

@@ -73,19 +73,40 @@ void ExpectCompleteOutputs(const std::string& dir, bool pictures) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
+// The budget: 30 evaluations (12 under the sanitizers); the quick shoe is about 70 % lower
+// after 9 evaluations (README run), so either clears the 20 % asserted by far.
+constexpr int kShoeBudget = testing::SanitizedBuild() ? 12 : 30;
+
 TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   const std::string dir = testing::MakeScratchDir("optimize") + "/out";
-  const ChildProcessResult run =
-      RunTool({kShoe, "--max_evals=30", "--robust_placements=1", "--out=" + dir}, dir + ".log");
+  const ChildProcessResult run = RunTool({kShoe, "--max_evals=" + std::to_string(kShoeBudget),
+                                          "--robust_placements=1", "--out=" + dir},
+                                         dir + ".log");
   ASSERT_TRUE(run.ok()) << run.Describe() << "\n" << Read(dir + ".log");
   const Json summary = ReadJsonFile(dir + "/summary.json");
-  for (const char* key :
-       {"initial_score", "optimized_score", "reduction_percent", "followed_score",
-        "followed_reduction_percent", "fresh_placement_converged", "placement_checks",
-        "worst_placement_reduction_percent", "skin_zeta", "skin_zeta_reduction_percent",
-        "skin_contact_area_m2", "fresh_peak_pressure_Pa", "peak_relief_percent", "offloading",
-        "contact_stiffness_Pa_per_m", "filter_radius_m", "gamma", "wall_s", "body_vertices",
-        "support_vertices", "evaluations", "stop_reason", "candidates"}) {
+  for (const char* key : {"initial_score",
+                          "optimized_score",
+                          "reduction_percent",
+                          "followed_score",
+                          "followed_reduction_percent",
+                          "fresh_placement_converged",
+                          "placement_checks",
+                          "worst_placement_reduction_percent",
+                          "skin_zeta",
+                          "skin_zeta_reduction_percent",
+                          "skin_contact_area_m2",
+                          "fresh_peak_pressure_Pa",
+                          "peak_relief_percent",
+                          "offloading",
+                          "contact_stiffness_Pa_per_m",
+                          "filter_radius_m",
+                          "gamma",
+                          "wall_s",
+                          "body_vertices",
+                          "support_vertices",
+                          "evaluations",
+                          "stop_reason",
+                          "candidates"}) {
     EXPECT_NE(summary.Find(key), nullptr) << key;
   }
   // The headline is the body placed afresh: the kept design must beat the flat sole there.
@@ -93,7 +114,7 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   EXPECT_GE(GetNumber(summary, "reduction_percent", "summary"), 20.0) << Read(dir + ".log");
   EXPECT_LT(GetNumber(summary, "optimized_score", "summary"),
             GetNumber(summary, "initial_score", "summary"));
-  EXPECT_LE(GetNumber(summary, "evaluations", "summary"), 30.0);
+  EXPECT_LE(GetNumber(summary, "evaluations", "summary"), kShoeBudget);
   // Shoe checks: ±3 mm along both horizontal axes and ±1° of pitch, each with a verdict.
   const Json& checks = GetMember(summary, "placement_checks", "summary");
   EXPECT_EQ(checks.size(), 6u);
@@ -163,14 +184,23 @@ TEST_P(ToolsOptimizeSignals, AStopSignalLeavesCompleteOutputsForTheBestDesign) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, ToolsOptimizeSignals, ::testing::Values(SIGINT, SIGTERM),
-                         [](const auto& info) { return info.param == SIGINT ? "sigint" : "sigterm"; });
+                         [](const auto& info) {
+                           return info.param == SIGINT ? "sigint" : "sigterm";
+                         });
 
 // The bump scene: 40 evaluations in rounds of 8 take about ten seconds and checkpoint after
-// every round.
+// every round (18 in rounds of 6 under the sanitizers, 10-20x slower).
 std::vector<std::string> BumpRun(const std::string& out) {
-  return {"--scenario=bump", "--bump_edge_length=0.01", "--max_evals=40", "--round_evals=8",
-          "--candidates=2",  "--plot=false",            "--placement_checks=false",
-          "--progress=true", "--out=" + out};
+  const bool sanitized = testing::SanitizedBuild();
+  return {"--scenario=bump",
+          "--bump_edge_length=0.01",
+          sanitized ? "--max_evals=18" : "--max_evals=40",
+          sanitized ? "--round_evals=6" : "--round_evals=8",
+          "--candidates=2",
+          "--plot=false",
+          "--placement_checks=false",
+          "--progress=true",
+          "--out=" + out};
 }
 
 TEST(ToolsOptimize, AKilledRunLeavesThePreviousOutputOrNoneAndResumesToTheSameDesign) {
@@ -190,7 +220,7 @@ TEST(ToolsOptimize, AKilledRunLeavesThePreviousOutputOrNoneAndResumesToTheSameDe
   const std::string previous = Read(dir + "/summary.json");
   const pid_t pid = Start(BumpRun(dir), dir + ".log");
   bool checkpointed = false;
-  for (int wait = 0; wait < 1200 && !checkpointed; ++wait) {
+  for (int wait = 0; wait < 6000 && !checkpointed; ++wait) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     checkpointed = fs::exists(dir + ".checkpoint.json");
   }

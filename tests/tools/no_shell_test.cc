@@ -48,7 +48,9 @@ TEST(ToolsNoShell, OptimizeOutputDirectoryIsNeverInterpreted) {
   ExpectNothingRan(scratch);
   EXPECT_TRUE(fs::exists(out + "/summary.json"));
   EXPECT_TRUE(fs::exists(out + "/support_optimized.stl"));
-  if (MatplotlibAvailable()) EXPECT_TRUE(fs::exists(out + "/pressure_maps.png"));
+  if (MatplotlibAvailable()) {
+    EXPECT_TRUE(fs::exists(out + "/pressure_maps.png"));
+  }
   fs::remove_all(scratch);
 }
 
@@ -66,7 +68,9 @@ TEST(ToolsNoShell, OptimizeFlagfileValueIsNeverInterpreted) {
   ASSERT_TRUE(run.ok()) << run.Describe();
   ExpectNothingRan(scratch);
   EXPECT_TRUE(fs::exists(out + "/summary.json"));
-  if (MatplotlibAvailable()) EXPECT_TRUE(fs::exists(out + "/phi_history.png"));
+  if (MatplotlibAvailable()) {
+    EXPECT_TRUE(fs::exists(out + "/phi_history.png"));
+  }
   fs::remove_all(scratch);
 }
 
@@ -80,7 +84,9 @@ TEST(ToolsNoShell, CompareOutputDirectoryIsNeverInterpreted) {
   ASSERT_TRUE(run.ok()) << run.Describe();
   ExpectNothingRan(scratch);
   EXPECT_TRUE(fs::exists(out + "/compare.csv"));
-  if (MatplotlibAvailable()) EXPECT_TRUE(fs::exists(out + "/compare.png"));
+  if (MatplotlibAvailable()) {
+    EXPECT_TRUE(fs::exists(out + "/compare.png"));
+  }
   fs::remove_all(scratch);
 }
 
