@@ -1,9 +1,10 @@
 #include "ergo/design/placement_checks.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <thread>
 
 #include <omp.h>
@@ -84,9 +85,19 @@ std::vector<DesignEvaluation> EvaluatePlacements(const DesignProblem& problem,
 DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& placement) {
   DesignProblem placed(problem);
   placed.set_placement(DesignPlacement::kFresh);
-  placed.set_start(
-      MovedRigidly(problem.body(), problem.start(), placement.shift, placement.tilt));
+  placed.set_start(MovedRigidly(problem.body(), problem.start(), placement.shift, placement.tilt));
   return placed;
+}
+
+double MeanPlacedPhi(const DesignProblem& problem, const Eigen::VectorXd& x,
+                     const std::vector<Placement>& placements, const std::atomic<bool>* stop) {
+  const std::vector<DesignEvaluation> placed = EvaluatePlacements(problem, x, placements, stop);
+  double mean = 0;
+  for (const DesignEvaluation& e : placed) {
+    if (!e.ok) return std::numeric_limits<double>::quiet_NaN();
+    mean += e.phi / static_cast<double>(placed.size());
+  }
+  return mean;
 }
 
 }  // namespace ergo

@@ -40,6 +40,12 @@ std::vector<DesignEvaluation> EvaluatePlacements(const DesignProblem& problem,
                                                  const std::vector<Placement>& placements,
                                                  const std::atomic<bool>* stop = nullptr);
 
+// The mean φ of x over those placements (the robust objective's value placed afresh); NaN if
+// any of their equilibria fails.
+double MeanPlacedPhi(const DesignProblem& problem, const Eigen::VectorXd& x,
+                     const std::vector<Placement>& placements,
+                     const std::atomic<bool>* stop = nullptr);
+
 // Runs task(i) for i in [0, count) on min(count, cores) threads, sharing the cores among
 // them (each thread's OpenMP regions get cores / threads).
 void ForEachInParallel(int count, const std::function<void(int)>& task);

@@ -277,14 +277,7 @@ int Compare() {
       RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
   RoundsProblem rounds_problem;
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
-    const std::vector<DesignEvaluation> placed =
-        EvaluatePlacements(fresh, x, robust, &StopOnSignals::flag());
-    double mean = 0;
-    for (const DesignEvaluation& e : placed) {
-      if (!e.ok) return std::numeric_limits<double>::quiet_NaN();
-      mean += e.phi / static_cast<double>(placed.size());
-    }
-    return mean;
+    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag());
   };
   const double phi0 = robust.size() > 1 ? rounds_problem.fresh_score(x0) : start.phi;
   RoundsOptions rounds_options;

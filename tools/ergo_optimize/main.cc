@@ -205,14 +205,7 @@ int Run() {
     return std::make_unique<DesignObjective>(path);
   };
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
-    const std::vector<DesignEvaluation> placed =
-        EvaluatePlacements(fresh, x, robust, &StopOnSignals::flag());
-    double mean = 0;
-    for (const DesignEvaluation& e : placed) {
-      if (!e.ok) return std::numeric_limits<double>::quiet_NaN();
-      mean += e.phi / static_cast<double>(placed.size());
-    }
-    return mean;
+    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag());
   };
   double phi0_objective = phi0;
   if (robust.size() > 1) {
