@@ -31,7 +31,8 @@ Json Numbers(const std::vector<double>& v) {
 std::vector<double> ToVector(const Json& array) {
   std::vector<double> out;
   for (size_t i = 0; i < array.size(); ++i)
-    out.push_back(array[i].is_null() ? std::numeric_limits<double>::quiet_NaN() : array[i].AsNumber());
+    out.push_back(array[i].is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                     : array[i].AsNumber());
   return out;
 }
 
@@ -45,17 +46,50 @@ std::string CheckpointPath(const std::string& dir) {
 }
 
 std::string RunFingerprint() {
-  static const std::set<std::string> kIgnored = {
-      "out",      "resume",       "max_evals",        "max_seconds", "threads",
-      "progress", "plot",         "checkpoint_every", "flagfile",    "fromenv",
-      "tryfromenv", "undefok",    "help",             "helpfull",    "helpshort",
-      "helpon",   "helpmatch",    "helppackage",      "helpxml",     "version",
-      "logtostderr", "minloglevel", "alsologtostderr", "log_dir",    "v",
-      "vmodule",  "stderrthreshold", "colorlogtostderr", "logbuflevel", "logbufsecs",
-      "max_log_size", "stop_logging_if_full_disk", "log_prefix", "log_link",
-      "drop_log_memory", "logemaillevel", "logmailer", "alsologtoemail", "log_backtrace_at",
-      "symbolize_stacktrace", "timestamp_in_logfile_name", "log_year_in_prefix",
-      "log_utc_time", "log_file_header"};
+  static const std::set<std::string> kIgnored = {"out",
+                                                 "resume",
+                                                 "max_evals",
+                                                 "max_seconds",
+                                                 "threads",
+                                                 "progress",
+                                                 "plot",
+                                                 "checkpoint_every",
+                                                 "flagfile",
+                                                 "fromenv",
+                                                 "tryfromenv",
+                                                 "undefok",
+                                                 "help",
+                                                 "helpfull",
+                                                 "helpshort",
+                                                 "helpon",
+                                                 "helpmatch",
+                                                 "helppackage",
+                                                 "helpxml",
+                                                 "version",
+                                                 "logtostderr",
+                                                 "minloglevel",
+                                                 "alsologtostderr",
+                                                 "log_dir",
+                                                 "v",
+                                                 "vmodule",
+                                                 "stderrthreshold",
+                                                 "colorlogtostderr",
+                                                 "logbuflevel",
+                                                 "logbufsecs",
+                                                 "max_log_size",
+                                                 "stop_logging_if_full_disk",
+                                                 "log_prefix",
+                                                 "log_link",
+                                                 "drop_log_memory",
+                                                 "logemaillevel",
+                                                 "logmailer",
+                                                 "alsologtoemail",
+                                                 "log_backtrace_at",
+                                                 "symbolize_stacktrace",
+                                                 "timestamp_in_logfile_name",
+                                                 "log_year_in_prefix",
+                                                 "log_utc_time",
+                                                 "log_file_header"};
   std::vector<gflags::CommandLineFlagInfo> flags;
   gflags::GetAllFlags(&flags);
   std::ostringstream out;
@@ -107,15 +141,23 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   WriteJsonFile(path, j, 0);
 }
 
-void ApplyCheckpointFlags(const std::string& path) {
-  Json j;
+namespace {
+
+// The checkpoint's JSON; a missing or unreadable file is the user's --resume.
+Json ReadCheckpointJson(const std::string& path) {
   try {
-    j = ReadJsonFile(path);
+    return ReadJsonFile(path);
   } catch (const InputError& error) {
     throw InputError("--resume", "", std::string("cannot read the checkpoint: ") + error.what(),
                      "resume a run that wrote one (ergo_optimize --out=DIR writes "
-                     "DIR.checkpoint.json after every round)");
+                     "DIR.checkpoint.json after its rounds)");
   }
+}
+
+}  // namespace
+
+void ApplyCheckpointFlags(const std::string& path) {
+  const Json j = ReadCheckpointJson(path);
   std::istringstream lines(GetString(j, "fingerprint", path));
   std::string line;
   while (std::getline(lines, line)) {
@@ -124,15 +166,15 @@ void ApplyCheckpointFlags(const std::string& path) {
     const std::string name = line.substr(0, equals), value = line.substr(equals + 1);
     gflags::CommandLineFlagInfo info;
     if (!gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
-      throw InputError("--resume", "", "the checkpoint names a flag this tool does not have (--" +
-                                           name + ")",
+      throw InputError("--resume", "",
+                       "the checkpoint names a flag this tool does not have (--" + name + ")",
                        "resume with the ergo_optimize that wrote it");
     }
     if (!info.is_default && info.current_value != value) {
-      throw InputError("--" + name, "",
-                       "is " + info.current_value + " here but " + value + " in the checkpoint " +
-                           path,
-                       "leave it out: --resume takes the checkpoint's flags");
+      throw InputError(
+          "--" + name, "",
+          "is " + info.current_value + " here but " + value + " in the checkpoint " + path,
+          "leave it out: --resume takes the checkpoint's flags");
     }
     gflags::SetCommandLineOption(name.c_str(), value.c_str());
   }
@@ -148,14 +190,7 @@ void ApplyCheckpointFlags(const std::string& path) {
 }
 
 RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerprint) {
-  Json j;
-  try {
-    j = ReadJsonFile(path);
-  } catch (const InputError& error) {
-    throw InputError("--resume", "", std::string("cannot read the checkpoint: ") + error.what(),
-                     "resume a run that wrote one (ergo_optimize --out=DIR writes "
-                     "DIR.checkpoint.json after every round)");
-  }
+  const Json j = ReadCheckpointJson(path);
   const std::string source = path;
   if (GetNumber(j, "version", source) != kVersion)
     throw InputError(path, "", "is a checkpoint of another version", "start the run afresh");
@@ -167,8 +202,8 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
     while (std::getline(a, line_a) && std::getline(b, line_b) && line_a == line_b) {
     }
     throw InputError("--resume", "",
-                     "the checkpoint " + path + " was written with other flags (it has '" +
-                         line_a + "', this run '" + line_b + "')",
+                     "the checkpoint " + path + " was written with other flags (it has '" + line_a +
+                         "', this run '" + line_b + "')",
                      "resume with the flags of the run that wrote it");
   }
   RoundsState state;
