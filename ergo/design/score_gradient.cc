@@ -51,9 +51,8 @@ ScorePartials PressureScorePartials(const ContactPressures& pressures, const Lay
       if (weight == 0 || magnitude == 0) continue;
       const double share = point_on_body ? contacts.skin_share : contacts.support_share;
       // ∂(‖f‖/share)/∂z = −f̂ᵀ ∂²E/∂p∂z / share for every spring variable z.
-      const Eigen::Matrix<double, 1, 12> row = -(weight / (share * magnitude)) *
-                                               force.transpose() *
-                                               contact.spring.hessian.topRows<3>();
+      const Eigen::Matrix<double, 1, 12> row =
+          -(weight / (share * magnitude)) * force.transpose() * contact.spring.hessian.topRows<3>();
       Variable variables[4];
       const int n = SpringVariables(contact, point_on_body, skin, variables);
       for (int b = 0; b < n; ++b) {
@@ -99,8 +98,7 @@ SupportShapeGradient ResidualShapeContraction(const SurfaceContacts& contacts,
         stiffness_part += v.dot(contact.spring.gradient.segment<3>(3 * a));
       }
       for (int b = 0; b < n; ++b)
-        if (!variables[b].on_body)
-          out.position.row(variables[b].vertex) += row.segment<3>(3 * b);
+        if (!variables[b].on_body) out.position.row(variables[b].vertex) += row.segment<3>(3 * b);
       if (!point_on_body && stiffness_part != 0) {
         const double area = support_areas[contact.point];
         CHECK_GT(area, 0.0);
@@ -117,18 +115,18 @@ Vertices ResidualShapeDerivative(const SurfaceContacts& contacts, const LayeredB
   Vertices out = Vertices::Zero(body.rest().vertices.rows(), 3);
   // The rate of each support vertex's barycentric area.
   Eigen::VectorXd area_rate = Eigen::VectorXd::Zero(support.vertices.rows());
+  Eigen::VectorXd areas;  // only the support's springs need them (one-way: none)
   if (contacts.support_springs && !contacts.support.contacts.empty()) {
+    areas = BarycentricVertexAreas(support);
     for (Eigen::Index t = 0; t < support.triangles.rows(); ++t) {
       const Eigen::RowVector3i tri = support.triangles.row(t);
-      const Eigen::Matrix3d gradient =
-          TriangleAreaGradient(support.vertices.row(tri[0]), support.vertices.row(tri[1]),
-                               support.vertices.row(tri[2]));
+      const Eigen::Matrix3d gradient = TriangleAreaGradient(
+          support.vertices.row(tri[0]), support.vertices.row(tri[1]), support.vertices.row(tri[2]));
       double rate = 0;
       for (int k = 0; k < 3; ++k) rate += gradient.row(k).dot(support_velocity.row(tri[k]));
       for (int k = 0; k < 3; ++k) area_rate[tri[k]] += rate / 3;
     }
   }
-  const Eigen::VectorXd areas = BarycentricVertexAreas(support);
   for (int side = 0; side < 2; ++side) {
     const bool point_on_body = side == 0;
     if (!point_on_body && !contacts.support_springs) break;  // score-only: not in G
@@ -140,9 +138,9 @@ Vertices ResidualShapeDerivative(const SurfaceContacts& contacts, const LayeredB
         if (!variables[b].on_body)
           velocity.segment<3>(3 * b) = support_velocity.row(variables[b].vertex).transpose();
       const Eigen::Matrix<double, 12, 1> change = contact.spring.hessian * velocity;
-      const double stiffness_rate =
-          point_on_body || areas[contact.point] <= 0 ? 0.0
-                                                     : area_rate[contact.point] / areas[contact.point];
+      const double stiffness_rate = point_on_body || areas[contact.point] <= 0
+                                        ? 0.0
+                                        : area_rate[contact.point] / areas[contact.point];
       for (int a = 0; a < n; ++a) {
         if (!variables[a].on_body) continue;
         out.row(variables[a].vertex) +=
@@ -162,9 +160,8 @@ Vertices ChainSupportAreas(const Eigen::VectorXd& area_weight, const TriMesh& su
     // s_j gets a third of each incident triangle's area.
     const double weight = (area_weight[tri[0]] + area_weight[tri[1]] + area_weight[tri[2]]) / 3;
     if (weight == 0) continue;
-    const Eigen::Matrix3d gradient =
-        TriangleAreaGradient(support.vertices.row(tri[0]), support.vertices.row(tri[1]),
-                             support.vertices.row(tri[2]));
+    const Eigen::Matrix3d gradient = TriangleAreaGradient(
+        support.vertices.row(tri[0]), support.vertices.row(tri[1]), support.vertices.row(tri[2]));
     for (int k = 0; k < 3; ++k) out.row(tri[k]) += weight * gradient.row(k);
   }
   return out;
