@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -261,7 +262,11 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
   criteria.sliver_bound_degrees = options.sliver_bound_degrees;
   criteria.seed = options.seed;
 
+  auto say = [&options](const std::string& stage) {
+    if (options.progress) options.progress(stage);
+  };
   // 1. Look before meshing.
+  say("scanning the layer on a grid");
   const GridScan scan =
       ScanGrid(layer, region, !layer.region, options, options.relative_error_bound * radius);
   if (scan.core_outside) {
@@ -294,6 +299,9 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
   }
 
   // 2. Mesh.
+  say("meshing the layer with CGAL Mesh_3 (about " +
+      std::to_string(static_cast<long long>(estimated_tets)) + " tets expected: refine, " +
+      (options.perturb ? "perturb, " : "") + (options.exude ? "exude" : "") + ")");
   LayerMesherResult meshed = MeshImplicitLayer(region, layer.bounds, scan.seeds, criteria);
   BuiltLayer built;
   LayerBuildReport& report = built.report;
@@ -311,6 +319,15 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
   }
   TetMesh mesh = std::move(meshed.mesh);
 
+  {
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "meshed %lld tets (refine %.1f s, perturb %.1f s, exude %.1f s); classifying "
+                  "the boundary",
+                  static_cast<long long>(mesh.tets.rows()), meshed.refine_seconds,
+                  meshed.perturb_seconds, meshed.exude_seconds);
+    say(line);
+  }
   // 3. Classify the boundary components by the surface Mesh_3 put their vertices on.
   TetBoundary boundary = ExtractBoundary(mesh);
   std::vector<int> votes_core(boundary.component_count, 0), votes_skin(boundary.component_count, 0);
@@ -398,6 +415,7 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
                            " separate pieces");
   }
 
+  say("measuring the layer's thickness and depth");
   // 4. Measure: the skin and the core surface as meshes, thickness and depth.
   std::vector<bool> skin_face(boundary.surface.triangles.rows()), core_face(skin_face.size());
   for (size_t f = 0; f < skin_face.size(); ++f) {
@@ -493,6 +511,7 @@ BuiltLayer BuildLayerFromSurface(const TriMesh& skin, const SampleInterpolant& d
                                  const BuilderOptions& options, const std::string& source) {
   const Clock::time_point start = Clock::now();
   ValidateOptions(options, source);
+  if (options.progress) options.progress("checking the skin surface");
   // The mesh check, with the findings that matter for a skin.
   MeshCheckOptions check_options;
   check_options.require_closed = false;

@@ -51,6 +51,9 @@ struct BuilderOptions {
   // Candidate initial points per surface (found on a grid); Mesh_3 starts from as few as
   // will do.
   int max_seeds_per_surface = 1024;
+  // Called at the start of each stage (scan, mesh, classify, measure) with a line for
+  // people; none when empty.
+  std::function<void(const std::string& stage)> progress;
 };
 
 // Input (a): the layer is {f_out < 0} minus {f_core < 0}.

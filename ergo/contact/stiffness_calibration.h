@@ -27,6 +27,9 @@ struct CalibrationOptions {
   // against noise and non-monotone data.
   double min_exponent = 0.1;
   double max_exponent = 3.0;
+  // Called after each penetration evaluation (k, its max penetration in m or NaN when the
+  // solve failed): progress lines for long calibrations.
+  std::function<void(double stiffness, double penetration)> progress;
 };
 
 struct CalibrationResult {

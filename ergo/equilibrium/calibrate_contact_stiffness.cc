@@ -1,5 +1,7 @@
 #include "ergo/equilibrium/calibrate_contact_stiffness.h"
 
+#include <cmath>
+
 namespace ergo {
 
 CalibrationResult CalibrateContactStiffness(EquilibriumSolver& solver, const Support& support,
@@ -12,6 +14,8 @@ CalibrationResult CalibrateContactStiffness(EquilibriumSolver& solver, const Sup
   auto penetration_at = [&](double k) -> std::optional<double> {
     solver.set_contact_stiffness(k);
     EquilibriumResult result = solver.Solve(support, warm);
+    if (options.progress)
+      options.progress(k, result.converged ? result.max_penetration : std::nan(""));
     if (!result.converged) return std::nullopt;
     warm = result.state;
     latest = result;

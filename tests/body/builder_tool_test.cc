@@ -72,6 +72,11 @@ TEST(Body, ToolBuildsABodyDirectoryFromASurface) {
   // The printed summary has the same numbers.
   EXPECT_NE(run.output.find("vertices"), std::string::npos);
   EXPECT_NE(run.output.find("mass:"), std::string::npos);
+  // Each stage announced with the elapsed time (stderr; --progress=false silences it).
+  for (const char* stage :
+       {" s  reading ", " s  checking the skin surface", " s  meshing the layer with CGAL Mesh_3",
+        " s  meshed ", " s  measuring the layer", " s  checking the body"})
+    EXPECT_NE(run.output.find(stage), std::string::npos) << stage << "\n" << run.output;
   // And the directory loads.
   const LayeredBody body = LoadLayeredBody(out);
   EXPECT_NEAR(body.total_mass(), summary.Find("mass_kg")->AsNumber(), 1e-9);
@@ -85,6 +90,12 @@ TEST(Body, ToolBuildsAnImplicitShell) {
       out);
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(LoadLayeredBody(out).core_mass(), 2.0);
+  const ToolRun quiet = RunTool(
+      "build --shape=sphere_shell --outer_radius=0.1 --core_radius=0.06 --youngs_modulus=1e4 "
+      "--edge_length=0.025 --progress=false --out=" +
+      out);
+  ASSERT_EQ(quiet.status, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find(" s  meshing"), std::string::npos) << quiet.output;
 }
 
 TEST(Body, ToolBadInputsExitNonZeroNamingTheCulprit) {

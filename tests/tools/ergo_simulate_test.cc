@@ -33,6 +33,28 @@ CommandResult RunCommand(const std::string& command) {
   return result;
 }
 
+// The command's stdout and stderr apart (RunCommand merges them).
+struct SplitResult {
+  int status = -1;
+  std::string out, err;
+};
+
+SplitResult RunSplit(const std::string& command, const std::string& dir) {
+  const std::string out = dir + "/stdout.txt", err = dir + "/stderr.txt";
+  const int raw = std::system((command + " >" + out + " 2>" + err).c_str());
+  SplitResult result;
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  result.out = slurp(out);
+  result.err = slurp(err);
+  return result;
+}
+
 // One ball body and one slab for all tests (building the body takes a second).
 class ToolsSimulate : public ::testing::Test {
  protected:
@@ -110,6 +132,32 @@ TEST_F(ToolsSimulate, BadInputsExitWithStatusTwoNamingTheCulprit) {
   EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.output.find("rotation"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(*dir_ + "/bad1/summary.json"));
+}
+
+TEST_F(ToolsSimulate, ProgressGoesToStderrWithElapsedTimeAndCanBeSilenced) {
+  const std::string command = Simulate("--contact_stiffness=auto", "progress");
+  const SplitResult run = RunSplit(command, *dir_);
+  ASSERT_EQ(run.status, 0) << run.out << run.err;
+  // Progress on stderr only, every kind of line with the elapsed time first.
+  EXPECT_EQ(run.out.find(" s  Newton"), std::string::npos) << run.out;
+  for (const char* kind : {" s  placed ", " s  calibration  1: κ", " s  Newton   1  residual",
+                           " s  stiffness calibration: ", " s  equilibrium: "})
+    EXPECT_NE(run.err.find(kind), std::string::npos) << kind << "\n" << run.err;
+  const SplitResult quiet = RunSplit(command + " --progress=false", *dir_);
+  ASSERT_EQ(quiet.status, 0) << quiet.out << quiet.err;
+  EXPECT_EQ(quiet.err.find(" s  "), std::string::npos) << quiet.err;
+}
+
+TEST_F(ToolsSimulate, MaxSecondsStopsCleanlyWithExitOneAndWritesNothing) {
+  // A budget far below one calibration (each step is a full equilibrium).
+  const CommandResult run =
+      RunCommand(Simulate("--contact_stiffness=auto --max_seconds=1e-4", "late"));
+  EXPECT_EQ(run.status, 1) << run.output;
+  EXPECT_NE(run.output.find("--max_seconds=0.0001 ran out"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(*dir_ + "/late")) << run.output;
+  const CommandResult bad = RunCommand(Simulate("--max_seconds=-1", "bad"));
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--max_seconds"), std::string::npos) << bad.output;
 }
 
 }  // namespace

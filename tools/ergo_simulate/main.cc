@@ -18,11 +18,8 @@
 
 #include "ergo/body/body_directory.h"
 #include "ergo/body/core_lock.h"
-#include "ergo/design/contact_pressures.h"
 #include "ergo/design/equilibrium_report.h"
-#include "ergo/equilibrium/calibrate_contact_stiffness.h"
-#include "ergo/equilibrium/equilibrium_solver.h"
-#include "ergo/equilibrium/placement.h"
+#include "ergo/design/static_equilibrium.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
@@ -48,7 +45,12 @@ DEFINE_double(gap, 1e-3, "gap left by --place=auto, m");
 DEFINE_double(tolerance, 1e-8, "convergence: force residual relative to the load");
 DEFINE_int32(max_iterations, 100, "Newton iteration cap");
 DEFINE_int32(threads, 0, "threads for assembly and contact (0 = all cores)");
-DEFINE_bool(progress, true, "print one line per Newton iteration");
+DEFINE_bool(progress, true,
+            "print progress to stderr: placement, each calibration step and Newton iteration "
+            "(residual, contact vertices) with the elapsed time");
+DEFINE_double(max_seconds, 0,
+              "stop when the job has run this long, seconds (exit 1, nothing written); 0 = no "
+              "limit");
 
 namespace ergo {
 namespace {
@@ -89,9 +91,9 @@ void CheckUnits(const LayeredBody& body, const TriMesh& support) {
     std::ostringstream what;
     what << "the support is " << support_size << " m across and the body " << body_size
          << " m: the units disagree by about " << (ratio > 1 ? ratio : 1 / ratio) << "x";
-    throw InputError("--unit", "", what.str(),
-                     ratio > 1 ? "a file in millimetres needs --unit=mm"
-                               : "a file in metres needs --unit=m");
+    throw InputError(
+        "--unit", "", what.str(),
+        ratio > 1 ? "a file in millimetres needs --unit=mm" : "a file in metres needs --unit=m");
   }
 }
 
@@ -99,13 +101,13 @@ int Run() {
   Require(FLAGS_body, "body");
   Require(FLAGS_support, "support");
   Require(FLAGS_out, "out");
-  RequireInRange("max_iterations", static_cast<long>(FLAGS_max_iterations), 1, 100000,
-                 "e.g. 100");
+  RequireInRange("max_iterations", static_cast<long>(FLAGS_max_iterations), 1, 100000, "e.g. 100");
   RequireInRange("gap", FLAGS_gap, 0, 0.1, "metres, e.g. 0.001");
   RequireInRange("target_penetration", FLAGS_target_penetration, 1e-6, 0.02,
                  "metres, e.g. 3e-4 (0.3 mm)");
   RequireInRange("tolerance", FLAGS_tolerance, 1e-14, 1e-2, "e.g. 1e-8");
   RequireInRange("threads", static_cast<long>(FLAGS_threads), 0, 1024, "0 = all cores");
+  RequireInRange("max_seconds", FLAGS_max_seconds, 0, 1e7, "seconds, 0 = no limit");
   LengthUnit unit;
   if (!ParseLengthUnit(FLAGS_unit, &unit))
     throw InputError("--unit", "", "'" + FLAGS_unit + "' is not m or mm",
@@ -120,7 +122,8 @@ int Run() {
   scenario.external_torque = ParseVector(FLAGS_external_torque, "external_torque");
   scenario.lock = ParseCoreLock(FLAGS_lock, "--lock");
   if (scenario.gravity.norm() == 0 && scenario.external_force.norm() == 0) {
-    throw InputError("--gravity", "", "and --external_force are both zero: nothing presses the "
+    throw InputError("--gravity", "",
+                     "and --external_force are both zero: nothing presses the "
                      "body onto the support",
                      "give gravity (default 0,-9.81,0) or an external force");
   }
@@ -129,28 +132,22 @@ int Run() {
   const LayeredBody body = LoadLayeredBody(FLAGS_body, scenario);
   const TriMesh support_mesh = ReadTriMesh(FLAGS_support, ReadOptions{unit});
   CheckUnits(body, support_mesh);
-  const Support support(support_mesh, FLAGS_support);
 
-  const bool auto_stiffness = FLAGS_contact_stiffness == "auto";
-  EquilibriumOptions options;
+  StaticEquilibriumOptions options;
   options.relative_tolerance = FLAGS_tolerance;
   options.max_iterations = FLAGS_max_iterations;
+  options.target_penetration = FLAGS_target_penetration;
+  options.place = FLAGS_place == "auto";
+  options.gap = FLAGS_gap;
+  options.max_seconds = FLAGS_max_seconds;
   options.stop = &StopOnSignals::flag();
   if (FLAGS_progress) {
-    options.progress = [](int iteration, double residual, double step, int contacts) {
-      std::printf("  Newton %3d  residual %.3e N  step %.3g  contact vertices %d\n", iteration,
-                  residual, step, contacts);
-      std::fflush(stdout);
+    options.progress = [](const std::string& line) {
+      std::cerr << line << "\n";
+      std::cerr.flush();
     };
   }
-  if (auto_stiffness) {
-    // A first guess from the load: spread over ~1 % of the skin (at least ten vertices'
-    // areas) at the target depth.
-    const Eigen::VectorXd& areas = body.skin().rest_areas;
-    const double guess_area = std::max(10.0 * areas.mean(), 0.01 * areas.sum());
-    options.contact_stiffness =
-        body.TotalLoad().norm() / (guess_area * FLAGS_target_penetration);
-  } else {
+  if (FLAGS_contact_stiffness != "auto") {
     char* end = nullptr;
     options.contact_stiffness = std::strtod(FLAGS_contact_stiffness.c_str(), &end);
     if (end == FLAGS_contact_stiffness.c_str() || *end != '\0' ||
@@ -160,58 +157,35 @@ int Run() {
                        "give κ in Pa/m (e.g. 1e8) or auto");
     }
   }
-
-  BodyState start = RestState(body);
-  if (FLAGS_place == "auto") {
-    const PlacementResult placed = PlaceAboveSupport(body, start, support, FLAGS_gap);
-    if (!placed.found) {
-      std::cerr << "warning: the body meets the support nowhere along the load direction; solving "
-                   "from where it is\n";
-    }
-    start = placed.state;
+  const StaticEquilibrium solved =
+      SolveStaticEquilibrium(body, support_mesh, FLAGS_support, options);
+  const EquilibriumResult& result = solved.result;
+  if (!solved.placed_found) {
+    std::cerr << "warning: the body meets the support nowhere along the load direction; solved "
+                 "from where it was\n";
   }
-
-  EquilibriumSolver solver(body, options);
-  Json calibration_json;
-  EquilibriumResult result;
-  bool calibrated = true;
-  if (auto_stiffness) {
-    const CalibrationResult calibration = CalibrateContactStiffness(
-        solver, support, start, FLAGS_target_penetration, CalibrationOptions(), &result);
-    std::cout << "stiffness calibration: " << calibration.BriefReport() << "\n";
-    calibration_json = Json::Object();
-    calibration_json["converged"] = calibration.converged;
-    calibration_json["target_penetration_m"] = calibration.target;
-    calibration_json["penetration_m"] = calibration.penetration;
-    calibration_json["evaluations"] = calibration.evaluations;
-    calibration_json["message"] = calibration.message;
-    calibrated = calibration.converged;
-    // Final, reported solve at the calibrated k from the last converged state.
-    result = solver.Solve(support, result.converged ? result.state : start);
-  } else {
-    result = solver.Solve(support, start);
-  }
+  if (solved.calibration)
+    std::cout << "stiffness calibration: " << solved.calibration->BriefReport() << "\n";
   std::cout << result.FullReport() << "\n";
   if (StopOnSignals::stopped()) {
     std::cerr << "ergo_simulate: interrupted before any result; nothing written\n";
     return StopOnSignals::ExitCode();
   }
-
-  // Pressures from the very springs of the final state (the solver's last evaluation).
-  const ContactPressureEvaluator evaluator(body, support_mesh, PressureCostOptions());
-  const ContactPressures pressures =
-      evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
+  if (solved.out_of_time) {
+    std::cerr << "ergo_simulate: --max_seconds=" << FLAGS_max_seconds
+              << " ran out before the equilibrium converged; nothing written (raise "
+                 "--max_seconds, or 0 for no limit)\n";
+    return 1;
+  }
 
   const std::filesystem::path out(output.path());
-  WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, pressures);
-  WriteSupportVtu((out / "support.vtu").string(), support_mesh, pressures, Vertices());
-  Json summary = EquilibriumSummary(body, result, pressures, solver.options().contact_stiffness);
-  if (!calibration_json.is_null()) summary["calibration"] = calibration_json;
+  WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, solved.pressures);
+  WriteSupportVtu((out / "support.vtu").string(), support_mesh, solved.pressures, Vertices());
+  Json summary = solved.summary;
   summary["body_directory"] = FLAGS_body;
   summary["support_file"] = FLAGS_support;
-  summary["lock"] = body.lock().ToString();
   const bool touched = result.contact_vertices > 0 || result.contact_springs > 0;
-  summary["contact"] = touched;
+  const bool calibrated = !solved.calibration || solved.calibration->converged;
   WriteJsonFile((out / "summary.json").string(), summary);
   std::string error;
   if (!output.Commit(&error)) {
@@ -239,7 +213,8 @@ int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "static contact equilibrium of a body on a support\n"
       "  ergo_simulate --body=DIR --support=FILE [--unit=mm] [--external_force=FX,FY,FZ]\n"
-      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto] --out=OUT");
+      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto] "
+      "--out=OUT");
   try {
     ergo::CheckCommandLine(argc, argv);
   } catch (const ergo::InputError& error) {
