@@ -7,9 +7,20 @@ function(ergo_stage_library name)
   cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cc)
   add_library(ergo_${name}_lib STATIC ${sources})
-  target_include_directories(ergo_${name}_lib PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(ergo_${name}_lib PUBLIC ${ARG_DEPENDS})
-  set_target_properties(ergo_${name}_lib PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  ergo_installed_library(ergo_${name}_lib ${name})
+endfunction()
+
+# ergo_installed_library(TARGET EXPORT_NAME): a library of the installed package, seen by
+# consumers as ergo::EXPORT_NAME (ergoConfig.cmake); position-independent so that the
+# Python module can link it.
+function(ergo_installed_library target export_name)
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                              $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON
+                                             EXPORT_NAME ${export_name})
+  install(TARGETS ${target} EXPORT ergoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endfunction()
 
 # ergo_stage_tests(NAME LIBS lib...): one GoogleTest binary from tests/NAME/*.cc,

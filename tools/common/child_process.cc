@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -77,9 +78,9 @@ std::string CommandLineForDisplay(const std::vector<std::string>& argv) {
   std::string line;
   for (const std::string& arg : argv) {
     if (!line.empty()) line += ' ';
-    const bool plain =
-        !arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                              "0123456789_-./=:,+@%") == std::string::npos;
+    const bool plain = !arg.empty() && arg.find_first_not_of(
+                                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789_-./=:,+@%") == std::string::npos;
     if (plain) {
       line += arg;
       continue;
@@ -89,6 +90,17 @@ std::string CommandLineForDisplay(const std::vector<std::string>& argv) {
     line += '\'';
   }
   return line;
+}
+
+std::string ToolScriptPath(const std::string& name) {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed =
+        self.parent_path().parent_path() / "share" / "ergo" / "tools" / name;
+    if (std::filesystem::exists(installed, error)) return installed.string();
+  }
+  return std::string(ERGO_TOOLS_DIR) + "/" + name;
 }
 
 std::string FindPythonWithMatplotlib(const std::string& preferred) {

@@ -41,4 +41,9 @@ std::string CommandLineForDisplay(const std::vector<std::string>& argv);
 // pyenv or venv python3 earlier on the PATH may lack it). "" if none.
 std::string FindPythonWithMatplotlib(const std::string& preferred = "");
 
+// A helper script of the tools (e.g. "plot_results.py"): next to an installed tool
+// (<prefix>/share/ergo/tools/, `cmake --install`) when it is there, else in the source
+// tree the tool was built from.
+std::string ToolScriptPath(const std::string& name);
+
 }  // namespace ergo

@@ -46,10 +46,6 @@
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
 
-#ifndef ERGO_TOOLS_DIR
-#define ERGO_TOOLS_DIR ""
-#endif
-
 DEFINE_string(optimizers,
               "paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,steepest",
               "comma-separated optimisers to compare");
@@ -200,9 +196,8 @@ void PrintTable(std::vector<OptimizerResult> results) {
 
 void Plot(const std::string& out_dir, const std::string& final_dir) {
   if (!FLAGS_plot) return;
-  const std::string script = !FLAGS_plot_script.empty()
-                                 ? FLAGS_plot_script
-                                 : std::string(ERGO_TOOLS_DIR) + "/plot_compare.py";
+  const std::string script =
+      !FLAGS_plot_script.empty() ? FLAGS_plot_script : ToolScriptPath("plot_compare.py");
   if (!std::filesystem::exists(script)) {
     std::cerr << "ergo_compare: warning: plot script " << script
               << " not found (give --plot_script); compare.png not written\n";

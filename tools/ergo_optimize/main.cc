@@ -40,10 +40,6 @@
 #include "tools/ergo_optimize/run_outputs.h"
 #include "tools/ergo_optimize/run_summary.h"
 
-#ifndef ERGO_TOOLS_DIR
-#define ERGO_TOOLS_DIR ""
-#endif
-
 DEFINE_string(
     optimizer, "nlopt-lbfgs",
     "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, nlopt-lbfgs");
@@ -136,8 +132,7 @@ void Plot(const std::string& dir) {
     return;
   }
   // An argument vector, never a shell: --out may hold any character.
-  const std::vector<std::string> command = {python,
-                                            std::string(ERGO_TOOLS_DIR) + "/plot_results.py", dir};
+  const std::vector<std::string> command = {python, ToolScriptPath("plot_results.py"), dir};
   const ChildProcessResult plotted = RunChildProcess(command);
   if (!plotted.ok())
     std::cerr << "warning: pictures not written: " << CommandLineForDisplay(command) << " "
