@@ -20,9 +20,12 @@ esac
 
 packages=(build-essential cmake pkg-config libeigen3-dev libceres-dev libsuitesparse-dev
   libopenblas-dev libnlopt-cxx-dev libcgal-dev libgflags-dev libgoogle-glog-dev libtbb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-matplotlib)
+  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-matplotlib
+  python3-dev pybind11-dev python3-numpy)
 # The fuzzers (tools/fuzz.sh, run by CI after the tests) need clang's libFuzzer and OpenMP.
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev libomp-14-dev)
+# The Python bindings' tests (pytest, SciPy's optimisers in the example).
+[ "$mode" = test ] && packages+=(python3-pytest python3-scipy)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

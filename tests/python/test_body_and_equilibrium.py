@@ -1,0 +1,103 @@
+# Bodies and one static equilibrium through the bindings, checked against laws that hold
+# without the code: the contact forces carry the body's weight, and a body built and
+# saved reads back identical.
+import numpy as np
+import pytest
+
+import ergo
+
+
+def box(half_width, y_top, depth):
+    """A closed, outward box surface: x, z in [-half_width, half_width], y in
+    [y_top - depth, y_top]."""
+    V = []
+    for y in (y_top - depth, y_top):
+        for x, z in [(-1, -1), (1, -1), (1, 1), (-1, 1)]:
+            V.append([x * half_width, y, z * half_width])
+    F = [[0, 1, 2], [0, 2, 3], [4, 6, 5], [4, 7, 6], [0, 4, 5], [0, 5, 1], [1, 5, 6],
+         [1, 6, 2], [2, 6, 7], [2, 7, 3], [3, 7, 4], [3, 4, 0]]
+    return np.array(V, dtype=float), np.array(F, dtype=np.int32)
+
+
+@pytest.fixture(scope="module")
+def ball(tmp_path_factory):
+    out = tmp_path_factory.mktemp("ball") / "body"
+    lines = []
+    body = ergo.build_body(out=str(out), progress=lines.append, shape="sphere_shell",
+                           outer_radius=0.05, core_radius=0.03, youngs_modulus=1e4,
+                           edge_length=0.014, seed=1)
+    return body, out, lines
+
+
+def test_built_body_is_saved_and_loads_back_identical(ball):
+    body, out, lines = ball
+    assert any("meshing the layer" in line for line in lines), lines
+    assert all(line.split()[1] == "s" for line in lines), lines  # "   0.1 s  stage"
+    loaded = ergo.load_body(str(out))
+    np.testing.assert_array_equal(loaded.rest_vertices, body.rest_vertices)
+    np.testing.assert_array_equal(loaded.tets, body.tets)
+    # Mass of the ball: ρ · 4/3 π R³ (the core's automatic mass uses the tissue density),
+    # within the meshing's volume error (a 14 mm mesh of a 5 cm sphere: a few percent).
+    expected = 1050 * 4 / 3 * np.pi * 0.05 ** 3
+    assert abs(loaded.mass - expected) < 0.06 * expected, (loaded.mass, expected)
+    assert body.build_summary["mass_kg"] == pytest.approx(body.mass)
+    assert "mass:" in body.build_report
+    assert body.skin_vertices.size > 0 and body.attached.any()
+
+
+def resting(ball):
+    """The ball with its core moving only vertically (a sphere's sliding and rolling meet
+    no resistance on a frictionless plane)."""
+    return ergo.load_body(str(ball[1]), lock="tx,tz,rx,ry,rz")
+
+
+def test_equilibrium_carries_the_weight(ball):
+    body = resting(ball)
+    V, F = box(0.1, 0.0, 0.02)
+    result = ergo.simulate(body, (V, F), contact_stiffness=3e7)
+    assert result["ok"], result["message"]
+    summary = result["summary"]
+    assert summary["converged"] and summary["contact_vertices"] > 0
+    # Balance: the contact forces on the skin add up to the weight (the solver's tolerance
+    # is 1e-8 of the load).
+    weight = body.mass * 9.81
+    total = result["skin_force"].sum(axis=0)
+    np.testing.assert_allclose(total, [0, weight, 0], atol=1e-6 * weight)
+    # Pressures: one per skin vertex, non-negative, and zero away from the contact.
+    pressure = result["skin_pressure"]
+    assert pressure.shape == (body.skin_vertices.size,) and (pressure >= 0).all()
+    assert 0 < (pressure > 0).sum() < pressure.size
+    # The body rests on the box's top (y = 0): nothing is far inside.
+    assert result["positions"][:, 1].min() > -1e-3
+    assert result["contact_stiffness"] == 3e7
+
+
+def test_auto_stiffness_reaches_the_target_penetration(ball):
+    body = resting(ball)
+    V, F = box(0.1, 0.0, 0.02)
+    lines = []
+    result = ergo.simulate(body, (V, F), target_penetration=3e-4, progress=lines.append)
+    assert result["ok"], result["message"]
+    calibration = result["summary"]["calibration"]
+    assert calibration["converged"]
+    assert abs(result["summary"]["max_penetration_m"] - 3e-4) <= 0.05 * 3e-4 + 1e-12
+    assert any("calibration" in line for line in lines)
+    assert any("Newton" in line for line in lines)
+
+
+def test_bad_options_raise_with_the_flag_named(ball, tmp_path):
+    body, _, _ = ball
+    with pytest.raises(ergo.InputError, match="--edge_length"):
+        ergo.build_body(shape="sphere_shell", outer_radius=0.05, core_radius=0.03,
+                        youngs_modulus=1e4)
+    with pytest.raises(ergo.InputError, match="not an option of build_body"):
+        ergo.build_body(shape="sphere_shell", edge_lenght=0.01)
+    with pytest.raises(ergo.InputError, match="lock"):
+        ergo.load_body(str(tmp_path), lock="tq")
+    with pytest.raises(ergo.InputError, match="body.json"):
+        ergo.load_body(str(tmp_path))
+    V, F = box(0.1, 0.0, 0.02)
+    with pytest.raises(ergo.InputError, match="contact_stiffness"):
+        ergo.simulate(body, (V, F), contact_stiffness=-1)
+    with pytest.raises(ergo.InputError):
+        ergo.simulate(body, (V, F[:6]))  # an open support: the tools' validation message
