@@ -32,3 +32,11 @@ run_step("configure the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/instal
 run_step("build the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build -j 2)
 run_step("run the consumer" ${WORK_DIR}/build/ergo_consumer)
 message(STATUS "${step_output}")
+# The Python package, from where the install put it (the interpreter's site directory
+# under the prefix), not from the build tree.
+if(PYTHON AND PYTHON_DIR)
+  set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
+  run_step("import the installed Python package" ${PYTHON} -c
+           "import ergo, os; assert os.path.realpath(ergo.__file__).startswith(os.path.realpath('${prefix}')), ergo.__file__; print(ergo.__file__, ergo.optimizers())")
+  message(STATUS "${step_output}")
+endif()
