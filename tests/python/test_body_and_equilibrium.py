@@ -101,3 +101,45 @@ def test_bad_options_raise_with_the_flag_named(ball, tmp_path):
         ergo.simulate(body, (V, F), contact_stiffness=-1)
     with pytest.raises(ergo.InputError):
         ergo.simulate(body, (V, F[:6]))  # an open support: the tools' validation message
+
+
+def octasphere(radius, levels):
+    """A closed, outward sphere surface: an octahedron subdivided `levels` times."""
+    V = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]
+    F = [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]]
+    V = [np.array(v, dtype=float) for v in V]
+    for _ in range(levels):
+        midpoint = {}
+
+        def middle(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in midpoint:
+                V.append((V[a] + V[b]) / 2)
+                midpoint[key] = len(V) - 1
+            return midpoint[key]
+
+        refined = []
+        for a, b, c in F:
+            ab, bc, ca = middle(a, b), middle(b, c), middle(c, a)
+            refined += [[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]
+        F = refined
+    V = np.array([radius * v / np.linalg.norm(v) for v in V])
+    return V, np.array(F, dtype=np.int32)
+
+
+def test_body_from_a_surface_in_millimetres(tmp_path):
+    V, F = octasphere(100.0, 3)  # a 10 cm ball, in millimetres
+    path = str(tmp_path / "ball_mm.ply")
+    ergo.write_mesh(path, V, F)
+    lines = []
+    body = ergo.build_body(surface=path, unit="mm", depth=0.03, youngs_modulus=1e4,
+                           edge_length=0.02, progress=lines.append)
+    assert any("checking the skin surface" in line for line in lines), lines
+    # The skin is the given surface: every skin vertex within the meshing's facet distance
+    # (edge/10 = 2 mm) of the 10 cm sphere.
+    skin = body.rest_vertices[body.skin_vertices]
+    radii = np.linalg.norm(skin, axis=1)
+    assert np.all(np.abs(radii - 0.1) < 0.004), (radii.min(), radii.max())
+    # Mass of a 10 cm ball of water-like tissue (the core by default has the same density).
+    assert abs(body.mass - 1050 * 4 / 3 * np.pi * 0.1 ** 3) < 0.08 * 4.4
+    assert body.build_summary["youngs_modulus_min_pa"] == pytest.approx(1e4)
