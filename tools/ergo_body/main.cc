@@ -168,8 +168,8 @@ BuiltLayer BuildShape(const BuilderOptions& options, Json* source) {
       return (p.cwiseQuotient(core).norm() - 1) * core.minCoeff();
     };
     layer.bounds = Eigen::AlignedBox3d(-1.2 * outer, 1.2 * outer);
-    Json axes = Json::Array();
-    for (double v : a) axes.Append(v);
+    Json axes = Json::array();
+    for (double v : a) axes.push_back(v);
     (*source)["semi_axes_m"] = axes;
     (*source)["depth_m"] = FLAGS_depth;
   } else {
@@ -201,7 +201,7 @@ int Build() {
   options.seed = static_cast<unsigned>(FLAGS_seed);
   const SampleInterpolant stiffness = StiffnessField(unit);
 
-  Json source = Json::Object();
+  Json source = Json::object();
   BuiltLayer built;
   if (!FLAGS_surface.empty()) {
     const SampleInterpolant depth = DepthField(unit);

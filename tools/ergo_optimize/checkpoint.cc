@@ -17,22 +17,21 @@ namespace {
 constexpr int kVersion = 1;
 
 Json Numbers(const Eigen::VectorXd& v) {
-  Json out = Json::Array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.Append(v[i]);
+  Json out = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v[i]);
   return out;
 }
 
 Json Numbers(const std::vector<double>& v) {
-  Json out = Json::Array();
-  for (double x : v) out.Append(x);
+  Json out = Json::array();
+  for (double x : v) out.push_back(x);
   return out;
 }
 
 std::vector<double> ToVector(const Json& array) {
   std::vector<double> out;
-  for (size_t i = 0; i < array.size(); ++i)
-    out.push_back(array[i].is_null() ? std::numeric_limits<double>::quiet_NaN()
-                                     : array[i].AsNumber());
+  for (const Json& x : array)
+    out.push_back(x.is_null() ? std::numeric_limits<double>::quiet_NaN() : x.get<double>());
   return out;
 }
 
@@ -105,10 +104,10 @@ constexpr const char* kBudgetFlags[] = {"max_evals", "max_seconds"};
 
 void WriteCheckpoint(const std::string& path, const RoundsState& state,
                      const std::string& fingerprint) {
-  Json j = Json::Object();
+  Json j = Json::object();
   j["version"] = kVersion;
   j["fingerprint"] = fingerprint;
-  Json budget = Json::Object();
+  Json budget = Json::object();
   for (const char* name : kBudgetFlags) {
     std::string value;
     if (gflags::GetCommandLineOption(name, &value)) budget[name] = value;
@@ -128,14 +127,14 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   j["kept_candidate"] = state.kept_candidate;
   j["finished"] = state.finished;
   j["stop_reason"] = state.stop_reason;
-  Json history = Json::Array();
+  Json history = Json::array();
   for (const IterationRecord& r : state.history) {
-    Json h = Json::Array();
+    Json h = Json::array();
     for (double v : {static_cast<double>(r.iteration), static_cast<double>(r.evaluations),
                      static_cast<double>(r.newton_iterations), r.seconds, r.phi, r.zeta, r.psi,
                      r.gradient_norm, r.step})
-      h.Append(v);
-    history.Append(h);
+      h.push_back(v);
+    history.push_back(h);
   }
   j["history"] = history;
   WriteJsonFile(path, j, 0);
@@ -179,12 +178,12 @@ void ApplyCheckpointFlags(const std::string& path) {
     gflags::SetCommandLineOption(name.c_str(), value.c_str());
   }
   // The budget of the run that wrote it, unless this command line gives another.
-  if (const Json* budget = j.Find("budget")) {
+  if (const Json* budget = FindMember(j, "budget")) {
     for (const char* name : kBudgetFlags) {
-      const Json* value = budget->Find(name);
+      const Json* value = FindMember(*budget, name);
       gflags::CommandLineFlagInfo info;
       if (value && gflags::GetCommandLineFlagInfo(name, &info) && info.is_default)
-        gflags::SetCommandLineOption(name, value->AsString().c_str());
+        gflags::SetCommandLineOption(name, value->get<std::string>().c_str());
     }
   }
 }
@@ -223,8 +222,8 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
   state.finished = GetBool(j, "finished", source);
   state.stop_reason = GetString(j, "stop_reason", source);
   const Json& history = GetMember(j, "history", source);
-  for (size_t i = 0; i < history.size(); ++i) {
-    const std::vector<double> h = ToVector(history[i]);
+  for (const Json& entry : history) {
+    const std::vector<double> h = ToVector(entry);
     if (h.size() != 9) throw InputError(path, "", "has a malformed history entry", "start afresh");
     IterationRecord r;
     r.iteration = static_cast<int>(h[0]);

@@ -179,7 +179,7 @@ int Run() {
     const CalibrationResult calibration = CalibrateContactStiffness(
         solver, support, start, FLAGS_target_penetration, CalibrationOptions(), &result);
     std::cout << "stiffness calibration: " << calibration.BriefReport() << "\n";
-    calibration_json = Json::Object();
+    calibration_json = Json::object();
     calibration_json["converged"] = calibration.converged;
     calibration_json["target_penetration_m"] = calibration.target;
     calibration_json["penetration_m"] = calibration.penetration;
