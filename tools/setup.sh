@@ -20,7 +20,7 @@ esac
 
 packages=(build-essential cmake pkg-config libeigen3-dev libceres-dev libsuitesparse-dev
   libopenblas-dev libnlopt-cxx-dev libcgal-dev libgflags-dev libgoogle-glog-dev libtbb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-matplotlib
+  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev python3 python3-matplotlib
   python3-dev pybind11-dev python3-numpy)
 # The fuzzers (tools/fuzz.sh, run by CI after the tests) need clang's libFuzzer and OpenMP.
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev libomp-14-dev)

@@ -102,8 +102,8 @@ BuiltLayer BuildShape(const BodyBuildOptions& body, const BuilderOptions& option
       return (p.cwiseQuotient(core).norm() - 1) * core.minCoeff();
     };
     layer.bounds = Eigen::AlignedBox3d(-1.2 * outer, 1.2 * outer);
-    Json axes = Json::Array();
-    for (int k = 0; k < 3; ++k) axes.Append(outer[k]);
+    Json axes = Json::array();
+    for (int k = 0; k < 3; ++k) axes.push_back(outer[k]);
     (*source)["semi_axes_m"] = axes;
     (*source)["depth_m"] = *body.depth;
   } else {
@@ -143,7 +143,7 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   options.progress = say;
   const SampleInterpolant stiffness = StiffnessField(body);
 
-  Json source = Json::Object();
+  Json source = Json::object();
   BuiltLayer built;
   std::ostringstream report;
   if (!body.surface.empty()) {

@@ -180,7 +180,7 @@ void SaveBodyDirectory(const std::string& dir, const BodyRecord& body) {
   fields.cell_scalars.push_back({"poisson_ratio", body.material.poisson_ratio});
   WriteVtu(PathIn(dir, kBodyViewFile), body.rest, fields);
 
-  Json json = Json::Object();
+  Json json = Json::object();
   json["format"] = kFormatName;
   json["format_version"] = kBodyFormatVersion;
   Json& files = json["files"];
@@ -278,8 +278,8 @@ BodyRecord ReadBodyDirectory(const std::string& dir) {
   }
   body.material.compression_resistance = GetNumber(material, "compression_resistance", json_path);
   body.material.inversion_threshold = GetNumber(material, "inversion_threshold", json_path);
-  if (const Json* summary = json.Find("summary")) body.summary = *summary;
-  if (const Json* source = json.Find("source")) body.source = *source;
+  if (const Json* summary = FindMember(json, "summary")) body.summary = *summary;
+  if (const Json* source = FindMember(json, "source")) body.source = *source;
   return body;
 }
 

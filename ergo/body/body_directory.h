@@ -34,8 +34,8 @@ struct BodyRecord {
   double core_mass = -1.0;         // kg; negative = core volume × core_density
   double core_density = 1050.0;    // kg/m³
   Eigen::VectorXd vertex_depth;    // m per vertex for the VTU view; may be empty
-  Json summary = Json::Object();   // the builder's numbers (counts, volume, mass, quality)
-  Json source = Json::Object();    // how it was built (inputs, options, notes)
+  Json summary = Json::object();   // the builder's numbers (counts, volume, mass, quality)
+  Json source = Json::object();    // how it was built (inputs, options, notes)
 };
 
 // Writes the directory (created if missing; existing body files are replaced), each file

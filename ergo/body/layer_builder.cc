@@ -608,7 +608,7 @@ std::string DescribeLayerBuild(const LayerBuildReport& r) {
 }
 
 Json LayerBuildReportJson(const LayerBuildReport& r) {
-  Json json = Json::Object();
+  Json json = Json::object();
   json["vertices"] = r.vertex_count;
   json["tets"] = r.tet_count;
   json["skin_vertices"] = r.skin_vertex_count;
@@ -630,8 +630,8 @@ Json LayerBuildReportJson(const LayerBuildReport& r) {
   json["facet_distance_m"] = r.facet_distance;
   json["mesh_seconds"] = r.refine_seconds + r.perturb_seconds + r.exude_seconds;
   json["total_seconds"] = r.total_seconds;
-  Json notes = Json::Array();
-  for (const std::string& note : r.notes) notes.Append(note);
+  Json notes = Json::array();
+  for (const std::string& note : r.notes) notes.push_back(note);
   json["notes"] = notes;
   return json;
 }

@@ -7,13 +7,13 @@ namespace ergo {
 namespace {
 
 Json Vector3Json(const Eigen::Vector3d& v) {
-  Json array = Json::Array();
-  for (int k = 0; k < 3; ++k) array.Append(v[k]);
+  Json array = Json::array();
+  for (int k = 0; k < 3; ++k) array.push_back(v[k]);
   return array;
 }
 
 Json StatisticsJson(const PressureStatistics& s) {
-  Json json = Json::Object();
+  Json json = Json::object();
   json["contact_vertices"] = s.contact_vertices;
   json["peak_pressure_Pa"] = s.peak;
   json["p95_pressure_Pa"] = s.percentile95;
@@ -70,7 +70,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
       ComputePressureStatistics(pressures.human.pressure, body.skin().rest_areas);
   const PressureStatistics support =
       ComputePressureStatistics(pressures.support.pressure, pressures.support_areas);
-  Json json = Json::Object();
+  Json json = Json::object();
   json["converged"] = result.converged;
   json["status"] = EquilibriumStatusName(result.status);
   json["reason"] = result.message;
@@ -93,7 +93,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   json["zeta_support"] = pressures.support.cost;
   json["human_side"] = StatisticsJson(human);
   json["support_side"] = StatisticsJson(support);
-  Json seconds = Json::Object();
+  Json seconds = Json::object();
   seconds["assembly"] = result.assembly_seconds;
   seconds["contact"] = result.contact_seconds;
   seconds["factorization"] = result.factorization_seconds;

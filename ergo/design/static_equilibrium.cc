@@ -133,7 +133,7 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   solved.summary =
       EquilibriumSummary(body, solved.result, solved.pressures, solved.contact_stiffness);
   if (solved.calibration) {
-    Json calibration = Json::Object();
+    Json calibration = Json::object();
     calibration["converged"] = solved.calibration->converged;
     calibration["target_penetration_m"] = solved.calibration->target;
     calibration["penetration_m"] = solved.calibration->penetration;

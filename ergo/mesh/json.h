@@ -1,100 +1,52 @@
-// Json: a minimal JSON value (null, bool, number, string, array, object) for ergo's own
-// small files — body.json, summary.json. Objects keep their keys in insertion order so
-// written files read like their writer intended. Numbers are doubles written in the
-// shortest form that reads back bit-identical; parse errors name the line and column.
+// Json: ergo's JSON value for its own small files (body.json, summary.json, checkpoints),
+// nlohmann-json's insertion-ordered value, so written files read as their writer intended.
+// Integers stay integers and doubles are written in the shortest form that reads back
+// bit-identical. The helpers below are the only way ergo reads and writes JSON text: they
+// turn every malformed file into an InputError naming the file, the line and column or the
+// member, and the fix.
 #pragma once
 
-#include <cstddef>
 #include <string>
 #include <string_view>
-#include <utility>
-#include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace ergo {
 
-class Json {
- public:
-  enum class Type { kNull, kBool, kNumber, kString, kArray, kObject };
-  using Member = std::pair<std::string, Json>;
-
-  Json() = default;  // null
-  Json(std::nullptr_t) {}
-  Json(bool value) : type_(Type::kBool), bool_(value) {}
-  Json(double value) : type_(Type::kNumber), number_(value) {}
-  Json(int value) : Json(static_cast<double>(value)) {}
-  Json(long value) : Json(static_cast<double>(value)) {}
-  Json(long long value) : Json(static_cast<double>(value)) {}
-  Json(unsigned value) : Json(static_cast<double>(value)) {}
-  Json(unsigned long value) : Json(static_cast<double>(value)) {}
-  Json(const char* value) : type_(Type::kString), string_(value) {}
-  Json(std::string value) : type_(Type::kString), string_(std::move(value)) {}
-
-  static Json Array() { return Json(Type::kArray); }
-  static Json Object() { return Json(Type::kObject); }
-
-  Type type() const { return type_; }
-  bool is_null() const { return type_ == Type::kNull; }
-  bool is_bool() const { return type_ == Type::kBool; }
-  bool is_number() const { return type_ == Type::kNumber; }
-  bool is_string() const { return type_ == Type::kString; }
-  bool is_array() const { return type_ == Type::kArray; }
-  bool is_object() const { return type_ == Type::kObject; }
-
-  // Typed access; asking for the wrong type is a programming error (CHECK). Readers of
-  // user files check the type first (or use the Get* helpers below).
-  bool AsBool() const;
-  double AsNumber() const;
-  const std::string& AsString() const;
-  const std::vector<Json>& AsArray() const;
-  const std::vector<Member>& AsObject() const;
-
-  // Arrays: appends (a null value becomes an empty array first).
-  void Append(Json value);
-  size_t size() const;  // elements of an array or members of an object, else 0
-  const Json& operator[](size_t index) const;
-
-  // Objects: the member `key`, inserted as null when missing (a null value becomes an
-  // empty object first); Find returns nullptr when missing or when this is no object.
-  Json& operator[](const std::string& key);
-  const Json* Find(const std::string& key) const;
-
-  bool operator==(const Json& other) const;
-  bool operator!=(const Json& other) const { return !(*this == other); }
-
- private:
-  explicit Json(Type type) : type_(type) {}
-
-  Type type_ = Type::kNull;
-  bool bool_ = false;
-  double number_ = 0;
-  std::string string_;
-  std::vector<Json> array_;
-  std::vector<Member> object_;
-};
+using Json = nlohmann::ordered_json;
 
 // "null", "boolean", "number", "string", "array" or "object".
-const char* JsonTypeName(Json::Type type);
+const char* JsonTypeName(Json::value_t type);
+inline const char* JsonTypeName(const Json& value) { return JsonTypeName(value.type()); }
 
-// The text of `value`: `indent` spaces per level and one member per line (indent > 0), or
-// everything on one line (indent == 0). Non-finite numbers (not representable in JSON)
-// are written as null. Ends with a newline when indent > 0.
+// The text of `value`: `indent` spaces per level and one member or element per line
+// (indent > 0, ending with a newline), or everything on one line (indent <= 0). Non-finite
+// numbers (not representable in JSON) are written as null, bytes that are not UTF-8 as
+// U+FFFD.
 std::string WriteJson(const Json& value, int indent = 2);
 
-// Parses a whole JSON text (RFC 8259; nesting at most 256 deep, duplicate keys refused).
-// Throws InputError(source, "line L, column C", what, fix) on malformed text.
+// Parses a whole JSON text (RFC 8259; arrays and objects nested at most 256 deep, duplicate
+// keys and numbers beyond the double range refused). Throws InputError(source,
+// "line L, column C", what, fix) on malformed text.
 Json ParseJson(std::string_view text, const std::string& source);
 
 // Reads and parses a file; InputError names the file when it is missing or malformed.
 Json ReadJsonFile(const std::string& path);
 
-// Writes `value` atomically (temporary file + rename).
+// Writes `value` atomically (temporary file + rename, see atomic_file.h).
 void WriteJsonFile(const std::string& path, const Json& value, int indent = 2);
+
+// The member `key` of `object`, or nullptr when it is missing or `object` is no object.
+// Use it (or GetMember) on data read from files: nlohmann's const operator[] with a missing
+// key is undefined behaviour.
+const Json* FindMember(const Json& object, const std::string& key);
 
 // Members of a JSON object read from a user's file, with InputErrors naming `source` and
 // the member ("member \"mesh\"") when it is missing or has the wrong type.
 const Json& GetMember(const Json& object, const std::string& key, const std::string& source);
+// A number, integer or not.
 double GetNumber(const Json& object, const std::string& key, const std::string& source);
-// A number that must be an integer in [min, max].
+// A number that must be an integer in [min, max] (written as 3 or as 3.0).
 long long GetInteger(const Json& object, const std::string& key, const std::string& source,
                      long long min, long long max);
 const std::string& GetString(const Json& object, const std::string& key, const std::string& source);

@@ -62,13 +62,13 @@ TEST(Body, ToolBuildsABodyDirectoryFromASurface) {
     EXPECT_TRUE(fs::exists(fs::path(out) / file)) << file;
   }
   const Json json = ReadJsonFile(out + "/body.json");
-  const Json& summary = *json.Find("summary");
-  EXPECT_GT(summary.Find("vertices")->AsNumber(), 100);
-  EXPECT_GT(summary.Find("attached_vertices")->AsNumber(), 10);
-  EXPECT_GT(summary.Find("mass_kg")->AsNumber(), 3.0);  // a 10 cm ball of water: 4.4 kg
-  EXPECT_LT(summary.Find("mass_kg")->AsNumber(), 4.5);
-  EXPECT_GE(summary.Find("youngs_modulus_min_pa")->AsNumber(), 5000);
-  EXPECT_LE(summary.Find("youngs_modulus_max_pa")->AsNumber(), 15000);
+  const Json& summary = GetMember(json, "summary", "body.json");
+  EXPECT_GT(GetNumber(summary, "vertices", "summary"), 100);
+  EXPECT_GT(GetNumber(summary, "attached_vertices", "summary"), 10);
+  EXPECT_GT(GetNumber(summary, "mass_kg", "summary"), 3.0);  // a 10 cm ball of water: 4.4 kg
+  EXPECT_LT(GetNumber(summary, "mass_kg", "summary"), 4.5);
+  EXPECT_GE(GetNumber(summary, "youngs_modulus_min_pa", "summary"), 5000);
+  EXPECT_LE(GetNumber(summary, "youngs_modulus_max_pa", "summary"), 15000);
   // The printed summary has the same numbers.
   EXPECT_NE(run.output.find("vertices"), std::string::npos);
   EXPECT_NE(run.output.find("mass:"), std::string::npos);
@@ -79,7 +79,7 @@ TEST(Body, ToolBuildsABodyDirectoryFromASurface) {
     EXPECT_NE(run.output.find(stage), std::string::npos) << stage << "\n" << run.output;
   // And the directory loads.
   const LayeredBody body = LoadLayeredBody(out);
-  EXPECT_NEAR(body.total_mass(), summary.Find("mass_kg")->AsNumber(), 1e-9);
+  EXPECT_NEAR(body.total_mass(), GetNumber(summary, "mass_kg", "summary"), 1e-9);
 }
 
 TEST(Body, ToolBuildsAnImplicitShell) {

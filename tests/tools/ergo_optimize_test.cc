@@ -107,7 +107,7 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
                           "evaluations",
                           "stop_reason",
                           "candidates"}) {
-    EXPECT_NE(summary.Find(key), nullptr) << key;
+    EXPECT_NE(FindMember(summary, key), nullptr) << key;
   }
   // The headline is the body placed afresh: the kept design must beat the flat sole there.
   EXPECT_TRUE(GetBool(summary, "fresh_placement_converged", "summary"));
@@ -120,7 +120,7 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   EXPECT_EQ(checks.size(), 6u);
   for (size_t i = 0; i < checks.size(); ++i) {
     EXPECT_TRUE(GetBool(checks[i], "converged", "check"));
-    EXPECT_NE(checks[i].Find("reduction_percent"), nullptr);
+    EXPECT_NE(FindMember(checks[i], "reduction_percent"), nullptr);
   }
   const Json& skin = GetMember(summary, "skin_zeta", "summary");
   EXPECT_LT(GetNumber(skin, "fresh", "skin_zeta"), GetNumber(skin, "initial", "skin_zeta"));

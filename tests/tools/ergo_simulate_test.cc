@@ -94,9 +94,10 @@ TEST_F(ToolsSimulate, CalibratedRunBalancesTheLoadAndWritesEveryOutput) {
   const Json& load = GetMember(summary, "load_N", "summary");
   // y is the one free translation (the lock holds tx, tz and the rotations, which carry any
   // sideways push of the ball's faceted skin on the slab's vertices).
-  EXPECT_NEAR(force[1].AsNumber(), -load[1].AsNumber(), 1e-6 * std::abs(load[1].AsNumber()));
-  EXPECT_LT(std::hypot(force[0].AsNumber(), force[2].AsNumber()),
-            1e-2 * std::abs(load[1].AsNumber()));
+  EXPECT_NEAR(force.at(1).get<double>(), -load.at(1).get<double>(),
+              1e-6 * std::abs(load.at(1).get<double>()));
+  EXPECT_LT(std::hypot(force.at(0).get<double>(), force.at(2).get<double>()),
+            1e-2 * std::abs(load.at(1).get<double>()));
   // The calibration's acceptance band (0.3 mm ± 0.03 mm).
   EXPECT_NEAR(GetNumber(summary, "max_penetration_m", "summary"), 3e-4, 3e-5);
   EXPECT_GT(GetNumber(summary, "peak_pressure_Pa", "summary"), 0);

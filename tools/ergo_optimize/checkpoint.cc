@@ -1,5 +1,6 @@
 #include "tools/ergo_optimize/checkpoint.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -17,22 +18,30 @@ namespace {
 constexpr int kVersion = 1;
 
 Json Numbers(const Eigen::VectorXd& v) {
-  Json out = Json::Array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.Append(v[i]);
+  Json out = Json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v[i]);
   return out;
 }
 
 Json Numbers(const std::vector<double>& v) {
-  Json out = Json::Array();
-  for (double x : v) out.Append(x);
+  Json out = Json::array();
+  for (double x : v) out.push_back(x);
   return out;
 }
 
-std::vector<double> ToVector(const Json& array) {
+// A list of numbers written by Numbers (null where the number was not finite).
+std::vector<double> ToVector(const Json& array, const std::string& source,
+                             const std::string& member) {
   std::vector<double> out;
-  for (size_t i = 0; i < array.size(); ++i)
-    out.push_back(array[i].is_null() ? std::numeric_limits<double>::quiet_NaN()
-                                     : array[i].AsNumber());
+  const bool numbers =
+      array.is_array() && std::all_of(array.begin(), array.end(),
+                                      [](const Json& x) { return x.is_number() || x.is_null(); });
+  if (!numbers) {
+    throw InputError(source, "member \"" + member + "\"", "is not an array of numbers",
+                     "start the run afresh");
+  }
+  for (const Json& x : array)
+    out.push_back(x.is_null() ? std::numeric_limits<double>::quiet_NaN() : x.get<double>());
   return out;
 }
 
@@ -105,10 +114,10 @@ constexpr const char* kBudgetFlags[] = {"max_evals", "max_seconds"};
 
 void WriteCheckpoint(const std::string& path, const RoundsState& state,
                      const std::string& fingerprint) {
-  Json j = Json::Object();
+  Json j = Json::object();
   j["version"] = kVersion;
   j["fingerprint"] = fingerprint;
-  Json budget = Json::Object();
+  Json budget = Json::object();
   for (const char* name : kBudgetFlags) {
     std::string value;
     if (gflags::GetCommandLineOption(name, &value)) budget[name] = value;
@@ -128,14 +137,10 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   j["kept_candidate"] = state.kept_candidate;
   j["finished"] = state.finished;
   j["stop_reason"] = state.stop_reason;
-  Json history = Json::Array();
+  Json history = Json::array();
   for (const IterationRecord& r : state.history) {
-    Json h = Json::Array();
-    for (double v : {static_cast<double>(r.iteration), static_cast<double>(r.evaluations),
-                     static_cast<double>(r.newton_iterations), r.seconds, r.phi, r.zeta, r.psi,
-                     r.gradient_norm, r.step})
-      h.Append(v);
-    history.Append(h);
+    history.push_back(Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds,
+                                   r.phi, r.zeta, r.psi, r.gradient_norm, r.step}));
   }
   j["history"] = history;
   WriteJsonFile(path, j, 0);
@@ -179,12 +184,12 @@ void ApplyCheckpointFlags(const std::string& path) {
     gflags::SetCommandLineOption(name.c_str(), value.c_str());
   }
   // The budget of the run that wrote it, unless this command line gives another.
-  if (const Json* budget = j.Find("budget")) {
+  if (const Json* budget = FindMember(j, "budget")) {
     for (const char* name : kBudgetFlags) {
-      const Json* value = budget->Find(name);
+      const Json* value = FindMember(*budget, name);
       gflags::CommandLineFlagInfo info;
       if (value && gflags::GetCommandLineFlagInfo(name, &info) && info.is_default)
-        gflags::SetCommandLineOption(name, value->AsString().c_str());
+        gflags::SetCommandLineOption(name, GetString(*budget, name, path).c_str());
     }
   }
 }
@@ -207,7 +212,7 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
                      "resume with the flags of the run that wrote it");
   }
   RoundsState state;
-  const std::vector<double> x = ToVector(GetMember(j, "kept_x", source));
+  const std::vector<double> x = ToVector(GetMember(j, "kept_x", source), source, "kept_x");
   state.kept_x = Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
   state.kept_fresh_phi = GetNumber(j, "kept_fresh_phi", source);
   state.kept_followed_phi = GetNumber(j, "kept_followed_phi", source);
@@ -217,14 +222,17 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
   state.rounds = static_cast<int>(GetNumber(j, "rounds", source));
   state.next_iteration = static_cast<int>(GetNumber(j, "next_iteration", source));
   state.seconds = GetNumber(j, "seconds", source);
-  state.candidate_phi = ToVector(GetMember(j, "candidate_phi", source));
-  state.candidate_fresh_phi = ToVector(GetMember(j, "candidate_fresh_phi", source));
+  state.candidate_phi = ToVector(GetMember(j, "candidate_phi", source), source, "candidate_phi");
+  state.candidate_fresh_phi =
+      ToVector(GetMember(j, "candidate_fresh_phi", source), source, "candidate_fresh_phi");
   state.kept_candidate = static_cast<int>(GetNumber(j, "kept_candidate", source));
   state.finished = GetBool(j, "finished", source);
   state.stop_reason = GetString(j, "stop_reason", source);
   const Json& history = GetMember(j, "history", source);
-  for (size_t i = 0; i < history.size(); ++i) {
-    const std::vector<double> h = ToVector(history[i]);
+  if (!history.is_array())
+    throw InputError(path, "member \"history\"", "is not an array", "start the run afresh");
+  for (const Json& entry : history) {
+    const std::vector<double> h = ToVector(entry, source, "history");
     if (h.size() != 9) throw InputError(path, "", "has a malformed history entry", "start afresh");
     IterationRecord r;
     r.iteration = static_cast<int>(h[0]);

@@ -37,12 +37,12 @@ View ViewAlongLoad(const LayeredBody& body) {
 }
 
 Json Points2d(const Vertices& points, const View& view) {
-  Json out = Json::Array();
+  Json out = Json::array();
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    Json p = Json::Array();
-    p.Append(points.row(i).dot(view.u.transpose()));
-    p.Append(points.row(i).dot(view.v.transpose()));
-    out.Append(p);
+    Json p = Json::array();
+    p.push_back(points.row(i).dot(view.u.transpose()));
+    p.push_back(points.row(i).dot(view.v.transpose()));
+    out.push_back(p);
   }
   return out;
 }
@@ -52,20 +52,20 @@ Json SkinView(const LayeredBody& body, const DesignReport& report, const View& v
   const Skin& skin = body.skin();
   const Vertices positions = DeformedPositions(body, report.evaluation.equilibrium.state);
   const TriMesh surface = skin.RestSurface(positions);
-  Json triangles = Json::Array();
+  Json triangles = Json::array();
   for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
     const Eigen::Vector3d a = surface.vertices.row(surface.triangles(f, 0));
     const Eigen::Vector3d b = surface.vertices.row(surface.triangles(f, 1));
     const Eigen::Vector3d c = surface.vertices.row(surface.triangles(f, 2));
     if ((b - a).cross(c - a).dot(view.down) <= 0) continue;
-    Json t = Json::Array();
-    for (int k = 0; k < 3; ++k) t.Append(surface.triangles(f, k));
-    triangles.Append(t);
+    Json t = Json::array();
+    for (int k = 0; k < 3; ++k) t.push_back(surface.triangles(f, k));
+    triangles.push_back(t);
   }
-  Json pressure = Json::Array();
+  Json pressure = Json::array();
   for (Eigen::Index i = 0; i < skin.vertices.size(); ++i)
-    pressure.Append(report.pressures.human.pressure[i]);
-  Json out = Json::Object();
+    pressure.push_back(report.pressures.human.pressure[i]);
+  Json out = Json::object();
   out["points2d"] = Points2d(surface.vertices, view);
   out["triangles"] = triangles;
   out["pressure"] = pressure;
@@ -111,37 +111,37 @@ Json PlotData(const Scenario& scenario, const DesignReport& initial,
               const DesignReport& optimized) {
   const LayeredBody& body = *scenario.body;
   const View view = ViewAlongLoad(body);
-  Json data = Json::Object();
+  Json data = Json::object();
   data["scenario"] = scenario.name;
-  Json view_json = Json::Object();
-  Json axes = Json::Array();
-  axes.Append(view.u_name);
-  axes.Append(view.v_name);
+  Json view_json = Json::object();
+  Json axes = Json::array();
+  axes.push_back(view.u_name);
+  axes.push_back(view.v_name);
   view_json["axes"] = axes;
   data["view"] = view_json;
   for (const auto& [name, report] :
        {std::pair<const char*, const DesignReport*>{"initial", &initial},
         std::pair<const char*, const DesignReport*>{"optimized", &optimized}}) {
-    Json entry = Json::Object();
+    Json entry = Json::object();
     entry["skin"] = SkinView(body, *report, view);
     data[name] = entry;
   }
   // The designed region: support triangles whose corners are all active.
   const std::vector<bool>& active = scenario.design.active;
-  Json triangles = Json::Array(), displacement = Json::Array();
+  Json triangles = Json::array(), displacement = Json::array();
   for (Eigen::Index f = 0; f < initial.support.triangles.rows(); ++f) {
     bool all = true;
     for (int k = 0; k < 3; ++k)
       all = all && (active.empty() || active[initial.support.triangles(f, k)]);
     if (!all) continue;
-    Json t = Json::Array();
-    for (int k = 0; k < 3; ++k) t.Append(initial.support.triangles(f, k));
-    triangles.Append(t);
+    Json t = Json::array();
+    for (int k = 0; k < 3; ++k) t.push_back(initial.support.triangles(f, k));
+    triangles.push_back(t);
   }
   for (Eigen::Index v = 0; v < initial.support.vertices.rows(); ++v)
-    displacement.Append(
+    displacement.push_back(
         1e3 * (optimized.support.vertices.row(v) - initial.support.vertices.row(v)).norm());
-  Json support_view = Json::Object();
+  Json support_view = Json::object();
   support_view["points2d"] = Points2d(initial.support.vertices, view);
   support_view["triangles"] = triangles;
   support_view["displacement_mm"] = displacement;

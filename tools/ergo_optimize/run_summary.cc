@@ -33,15 +33,15 @@ Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(); 
 Json Pose(const DesignReport& report) {
   if (!report.evaluation.ok) return Json();
   const BodyState& state = report.evaluation.equilibrium.state;
-  Json pose = Json::Array();
-  for (int k = 0; k < 3; ++k) pose.Append(state.centre[k]);
+  Json pose = Json::array();
+  for (int k = 0; k < 3; ++k) pose.push_back(state.centre[k]);
   const Eigen::AngleAxisd angle(state.rotation);
-  for (int k = 0; k < 3; ++k) pose.Append(angle.angle() * angle.axis()[k]);
+  for (int k = 0; k < 3; ++k) pose.push_back(angle.angle() * angle.axis()[k]);
   return pose;
 }
 
 Json ThreeWay(double initial, double followed, double fresh) {
-  Json out = Json::Object();
+  Json out = Json::object();
   out["initial"] = Number(initial);
   out["followed"] = Number(followed);
   out["fresh"] = Number(fresh);
@@ -65,7 +65,7 @@ Json SummaryJson(const RunSummary& s) {
   const DesignEvaluation& fresh = s.optimized.evaluation;
   const DesignEvaluation& followed = s.followed.evaluation;
   const double phi0 = initial.phi;
-  Json j = Json::Object();
+  Json j = Json::object();
   j["scenario"] = scenario.name;
   j["description"] = scenario.description;
   j["optimizer"] = s.optimizer;
@@ -100,7 +100,7 @@ Json SummaryJson(const RunSummary& s) {
   const double relief = Of(s.optimized, Reduction(s.initial.peak_pressure, s.optimized.peak_pressure));
   j["peak_relief_percent"] = Number(relief);
   if (IsShoe(s)) {
-    Json offloading = Json::Object();
+    Json offloading = Json::object();
     offloading["criterion"] = "peak reduction > 30 % or peak < 200 kPa (Bus et al. 2011, IWGDF)";
     offloading["peak_reduction_percent"] = Number(relief);
     offloading["peak_below_200kPa"] = fresh.ok && s.optimized.peak_pressure < kOffloadingPeak;
@@ -109,21 +109,21 @@ Json SummaryJson(const RunSummary& s) {
     j["offloading"] = offloading;
   }
   // Placement checks.
-  Json checks = Json::Array();
+  Json checks = Json::array();
   for (const PlacementOutcome& c : s.checks) {
-    Json entry = Json::Object();
+    Json entry = Json::object();
     entry["name"] = c.placement.name;
     entry["dx_m"] = c.placement.shift.x();
     entry["dz_m"] = c.placement.shift.z();
     entry["pitch_rad"] = c.placement.tilt.x();
-    entry["tilt_rad"] = Json::Array();
-    for (int k = 0; k < 3; ++k) entry["tilt_rad"].Append(c.placement.tilt[k]);
+    entry["tilt_rad"] = Json::array();
+    for (int k = 0; k < 3; ++k) entry["tilt_rad"].push_back(c.placement.tilt[k]);
     entry["converged"] = c.ok;
     entry["initial_score"] = Number(c.ok ? c.initial_score : kNaN);
     entry["score"] = Number(c.ok ? c.score : kNaN);
     entry["reduction_percent"] = Number(c.ok ? c.ReductionPercent() : kNaN);
     if (!c.ok) entry["message"] = c.message;
-    checks.Append(entry);
+    checks.push_back(entry);
   }
   j["placement_checks"] = checks;
   const double worst = WorstCheckReduction(s);
@@ -145,17 +145,17 @@ Json SummaryJson(const RunSummary& s) {
   j["initial_contact_vertices"] = initial.equilibrium.contact_vertices;
   j["initial_max_penetration_m"] = initial.equilibrium.max_penetration;
   j["optimized_max_penetration_m"] = Number(Of(s.optimized, fresh.equilibrium.max_penetration));
-  Json pose = Json::Object();
+  Json pose = Json::object();
   pose["initial"] = Pose(s.initial);
   pose["fresh"] = Pose(s.optimized);
   pose["followed"] = Pose(s.followed);
   j["core_pose"] = pose;
-  Json candidates = Json::Array();
+  Json candidates = Json::array();
   for (size_t i = 0; i < s.candidate_phi.size(); ++i) {
-    Json c = Json::Object();
+    Json c = Json::object();
     c["optimizer_score"] = s.candidate_phi[i];
     c["fresh_score"] = Number(i < s.candidate_fresh_phi.size() ? s.candidate_fresh_phi[i] : kNaN);
-    candidates.Append(c);
+    candidates.push_back(c);
   }
   j["candidates"] = candidates;
   j["kept_candidate"] = s.kept_candidate;
