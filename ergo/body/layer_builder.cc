@@ -13,6 +13,7 @@
 #include "ergo/body/hole_filling.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_check.h"
+#include "ergo/mesh/seconds_since.h"
 #include "ergo/mesh/tet_boundary.h"
 
 namespace ergo {
@@ -469,7 +470,7 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
     built.vertex_depth[v] = core_distance.Nearest(q).distance;
   }
   built.skin = skin;
-  report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  report.total_seconds = SecondsSince(start);
   return built;
 }
 
@@ -549,7 +550,7 @@ BuiltLayer BuildLayerFromSurface(const TriMesh& skin, const SampleInterpolant& d
   std::vector<std::string> notes = capped.notes;
   notes.insert(notes.end(), built.report.notes.begin(), built.report.notes.end());
   built.report.notes = std::move(notes);
-  built.report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  built.report.total_seconds = SecondsSince(start);
   return built;
 }
 

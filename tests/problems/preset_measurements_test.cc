@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "ergo/design/design_problem.h"
+#include "ergo/mesh/seconds_since.h"
 #include "problems/chair_scenario.h"
 #include "problems/mouse_scenario.h"
 #include "problems/shoe_scenario.h"
@@ -37,8 +38,7 @@ void Measure(const std::string& scenario_name, const std::string& preset, bool n
   const auto begin = std::chrono::steady_clock::now();
   ScenarioBuildReport report;
   const Scenario scenario = make(&report);
-  const double build =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const double build = SecondsSince(begin);
   DesignProblem problem = scenario.MakeProblem();
   const DesignEvaluation e = problem.Evaluate(problem.InitialDesign(), false);
   const EquilibriumResult& q = e.equilibrium;

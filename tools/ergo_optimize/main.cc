@@ -25,6 +25,7 @@
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/laplacian.h"
+#include "ergo/mesh/seconds_since.h"
 #include "solvers/design_objective.h"
 #include "solvers/fresh_rounds.h"
 #include "solvers/history_csv.h"
@@ -346,8 +347,7 @@ int Run() {
     }
   }
   summary.interrupted = StopOnSignals::stopped();
-  summary.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  summary.wall_seconds = SecondsSince(begin);
 
   // Outputs, into the temporary directory that becomes --out as a whole.
   const std::filesystem::path out(output.path());
