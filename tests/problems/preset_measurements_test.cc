@@ -6,13 +6,13 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "ergo/design/design_problem.h"
 #include "ergo/mesh/seconds_since.h"
+#include "ergo/mesh/split_list.h"
 #include "problems/chair_scenario.h"
 #include "problems/mouse_scenario.h"
 #include "problems/shoe_scenario.h"
@@ -23,9 +23,7 @@ namespace {
 bool Selected(const std::string& scenario, const std::string& preset, const std::string& start) {
   const char* filter = std::getenv("ERGO_MEASURE");
   if (filter == nullptr) return true;
-  std::stringstream items(filter);
-  std::string item;
-  while (std::getline(items, item, ',')) {
+  for (const std::string& item : SplitList(filter, ',')) {
     if (item != scenario && item != preset && item != start) return false;
   }
   return true;

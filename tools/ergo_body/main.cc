@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,6 +26,7 @@
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
 
 DEFINE_string(surface, "", "closed or open (flat-cut) skin surface: .obj .off .ply .stl .msh");
@@ -78,9 +78,7 @@ bool Given(const char* name) { return !gflags::GetCommandLineFlagInfoOrDie(name)
 
 std::vector<double> ParseTriple(const std::string& flag, const std::string& text) {
   std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
+  for (const std::string& item : SplitList(text, ',')) {
     try {
       size_t used = 0;
       values.push_back(std::stod(item, &used));

@@ -27,6 +27,7 @@
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
@@ -54,11 +55,9 @@ namespace ergo {
 namespace {
 
 Eigen::Vector3d ParseVector(const std::string& text, const std::string& flag) {
-  std::stringstream stream(text);
   Eigen::Vector3d v;
-  std::string item;
   int k = 0;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : SplitList(text, ',')) {
     char* end = nullptr;
     const double value = std::strtod(item.c_str(), &end);
     if (k >= 3 || end == item.c_str() || *end != '\0' || !std::isfinite(value)) {
