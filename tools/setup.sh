@@ -23,6 +23,8 @@ packages=(build-essential cmake pkg-config libeigen3-dev libceres-dev libsuitesp
   libgtest-dev libgmock-dev libbenchmark-dev python3 python3-matplotlib)
 # The fuzzers (tools/fuzz.sh, run by CI after the tests) need clang's libFuzzer and OpenMP.
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev libomp-14-dev)
+# The VTU test reads the binary files back with meshio (skipped without it).
+[ "$mode" = test ] && packages+=(python3-meshio)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
