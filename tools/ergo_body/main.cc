@@ -28,6 +28,7 @@
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
+#include "tools/common/vtu_flags.h"
 
 DEFINE_string(surface, "", "closed or open (flat-cut) skin surface: .obj .off .ply .stl .msh");
 DEFINE_string(unit, "m", "unit of --surface and of the CSVs' x,y,z and depth: m or mm");
@@ -192,6 +193,7 @@ int Build() {
   if (FLAGS_surface.empty() == FLAGS_shape.empty()) {
     FlagError("surface", "give exactly one of --surface and --shape", "e.g. --surface=leg.stl");
   }
+  const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
 
   BuilderOptions options;
   options.edge_length = FLAGS_edge_length;
@@ -252,7 +254,7 @@ int Build() {
   summary["youngs_modulus_max_pa"] = record.material.youngs_modulus.maxCoeff();
   record.summary = summary;
   record.source = source;
-  SaveBodyDirectory(FLAGS_out, record);
+  SaveBodyDirectory(FLAGS_out, record, vtu_encoding);
 
   std::cout << DescribeLayerBuild(built.report);
   std::cout.precision(4);

@@ -53,6 +53,7 @@ std::string RunFingerprint() {
                                                  "threads",
                                                  "progress",
                                                  "plot",
+                                                 "vtu_format",
                                                  "checkpoint_every",
                                                  "flagfile",
                                                  "fromenv",

@@ -37,6 +37,7 @@
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
+#include "tools/common/vtu_flags.h"
 #include "tools/ergo_optimize/checkpoint.h"
 #include "tools/ergo_optimize/run_outputs.h"
 #include "tools/ergo_optimize/run_summary.h"
@@ -147,6 +148,7 @@ void Plot(const std::string& dir) {
 
 int Run() {
   ValidateRunFlags();
+  const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   StopOnSignals signals;
   OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
@@ -352,8 +354,10 @@ int Run() {
   // Outputs, into the temporary directory that becomes --out as a whole.
   const std::filesystem::path out(output.path());
   const Vertices& initial_support = scenario.support.vertices;
-  WriteDesignFiles(out.string(), "initial", *scenario.body, summary.initial, initial_support);
-  WriteDesignFiles(out.string(), "optimized", *scenario.body, summary.optimized, initial_support);
+  WriteDesignFiles(out.string(), "initial", *scenario.body, summary.initial, initial_support,
+                   vtu_encoding);
+  WriteDesignFiles(out.string(), "optimized", *scenario.body, summary.optimized, initial_support,
+                   vtu_encoding);
   WriteHistoryCsv((out / "history.csv").string(), summary.result);
   WriteJsonFile((out / "summary.json").string(), SummaryJson(summary));
   const std::string markdown = SummaryMarkdown(summary);

@@ -31,6 +31,7 @@
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
+#include "tools/common/vtu_flags.h"
 
 DEFINE_string(body, "", "body directory written by `ergo_body build` (required)");
 DEFINE_string(support, "", "support surface mesh: .obj .off .ply .stl .msh (required, closed)");
@@ -111,6 +112,7 @@ int Run() {
                      "use --unit=m or --unit=mm");
   if (FLAGS_place != "auto" && FLAGS_place != "none")
     throw InputError("--place", "", "'" + FLAGS_place + "'", "use auto or none");
+  const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
 
   LayeredBodyOptions scenario;
@@ -202,8 +204,10 @@ int Run() {
       evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
 
   const std::filesystem::path out(output.path());
-  WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, pressures);
-  WriteSupportVtu((out / "support.vtu").string(), support_mesh, pressures, Vertices());
+  WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, pressures,
+                       vtu_encoding);
+  WriteSupportVtu((out / "support.vtu").string(), support_mesh, pressures, Vertices(),
+                  vtu_encoding);
   Json summary = EquilibriumSummary(body, result, pressures, solver.options().contact_stiffness);
   if (!calibration_json.is_null()) summary["calibration"] = calibration_json;
   summary["body_directory"] = FLAGS_body;
