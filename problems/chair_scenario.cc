@@ -5,6 +5,7 @@
 
 #include "ergo/body/core_lock.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/seconds_since.h"
 
 namespace ergo {
 ChairScenarioOptions ChairScenarioOptions::FromPreset(const std::string& preset) {

@@ -9,6 +9,7 @@
 #include <glog/logging.h>
 
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/seconds_since.h"
 
 namespace ergo {
 
@@ -101,8 +102,7 @@ GeneratedBody BuildImplicitBody(const ImplicitBodySpec& spec, const BuilderOptio
   generated.body = std::make_shared<LayeredBody>(
       LayeredBody::Create(built.mesh, built.attached, material, options, spec.name));
   generated.core_mass = generated.body->core_mass();
-  generated.build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  generated.build_seconds = SecondsSince(start);
   return generated;
 }
 

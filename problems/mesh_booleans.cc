@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <glog/logging.h>
 
+#include "ergo/mesh/cgal_surface_mesh.h"
 #include "ergo/mesh/input_error.h"
 
 namespace ergo {
@@ -18,53 +19,9 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
-using VertexIndex = SurfaceMesh::Vertex_index;
 using FaceIndex = SurfaceMesh::Face_index;
 using EdgeIndex = SurfaceMesh::Edge_index;
 namespace pmp = CGAL::Polygon_mesh_processing;
-
-SurfaceMesh ToSurfaceMesh(const TriMesh& mesh, const std::string& source, const char* which) {
-  SurfaceMesh surface;
-  std::vector<VertexIndex> vertices;
-  vertices.reserve(static_cast<size_t>(mesh.vertices.rows()));
-  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
-    vertices.push_back(
-        surface.add_vertex(Point(mesh.vertices(v, 0), mesh.vertices(v, 1), mesh.vertices(v, 2))));
-  for (Eigen::Index f = 0; f < mesh.triangles.rows(); ++f) {
-    const FaceIndex face =
-        surface.add_face(vertices[mesh.triangles(f, 0)], vertices[mesh.triangles(f, 1)],
-                         vertices[mesh.triangles(f, 2)]);
-    if (face == SurfaceMesh::null_face()) {
-      throw InputError(source, std::string(which) + " triangle " + std::to_string(f),
-                       "the surface is not an oriented manifold (the triangle cannot be added)",
-                       "check the mesh with `ergo_mesh check`");
-    }
-  }
-  return surface;
-}
-
-TriMesh FromSurfaceMesh(const SurfaceMesh& surface) {
-  TriMesh mesh;
-  std::vector<int> index(surface.number_of_vertices() + surface.number_of_removed_vertices(), -1);
-  mesh.vertices.resize(static_cast<Eigen::Index>(surface.number_of_vertices()), 3);
-  int next = 0;
-  for (VertexIndex v : surface.vertices()) {
-    const Point& p = surface.point(v);
-    mesh.vertices.row(next) << p.x(), p.y(), p.z();
-    index[v.idx()] = next++;
-  }
-  mesh.triangles.resize(static_cast<Eigen::Index>(surface.number_of_faces()), 3);
-  int row = 0;
-  for (FaceIndex f : surface.faces()) {
-    int k = 0;
-    for (VertexIndex v : CGAL::vertices_around_face(surface.halfedge(f), surface)) {
-      CHECK_LT(k, 3) << "non-triangular face";
-      mesh.triangles(row, k++) = index[v.idx()];
-    }
-    ++row;
-  }
-  return mesh;
-}
 
 void RequireVolume(const SurfaceMesh& surface, const std::string& source, const char* which) {
   if (!CGAL::is_closed(surface)) {
@@ -85,8 +42,8 @@ enum class Operation { kUnion, kDifference };
 
 BooleanResult Boolean(const TriMesh& a, const TriMesh& b, Operation operation,
                       const std::string& source) {
-  SurfaceMesh first = ToSurfaceMesh(a, source, "first operand");
-  SurfaceMesh second = ToSurfaceMesh(b, source, "second operand");
+  SurfaceMesh first = ToSurfaceMesh<Point>(a, source, "first operand");
+  SurfaceMesh second = ToSurfaceMesh<Point>(b, source, "second operand");
   RequireVolume(first, source, "first operand");
   RequireVolume(second, source, "second operand");
   SurfaceMesh out;
@@ -138,7 +95,7 @@ TriMesh RemeshIsotropic(const TriMesh& mesh, const std::vector<bool>& faces,
   CHECK_GT(target_edge_length, 0.0);
   CHECK_GE(iterations, 1);
   CHECK(faces.empty() || faces.size() == static_cast<size_t>(mesh.triangles.rows()));
-  SurfaceMesh surface = ToSurfaceMesh(mesh, "remeshing", "input");
+  SurfaceMesh surface = ToSurfaceMesh<Point>(mesh, "remeshing", "input");
   std::vector<FaceIndex> selected;
   for (FaceIndex f : surface.faces())
     if (faces.empty() || faces[f.idx()]) selected.push_back(f);

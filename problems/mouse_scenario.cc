@@ -9,6 +9,7 @@
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/laplacian.h"
 #include "ergo/mesh/primitives.h"
+#include "ergo/mesh/seconds_since.h"
 #include "problems/mesh_booleans.h"
 
 namespace ergo {

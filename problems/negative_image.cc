@@ -15,6 +15,7 @@
 #include "ergo/equilibrium/placement.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/laplacian.h"
+#include "ergo/mesh/seconds_since.h"
 #include "problems/mesh_booleans.h"
 
 namespace ergo {
@@ -149,7 +150,7 @@ NegativeImage MakeNegativeImage(const LayeredBody& body, const BodyState& contac
   }
   image.support = std::move(result);
   image.start = placed.state;
-  image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  image.seconds = SecondsSince(start);
   return image;
 }
 

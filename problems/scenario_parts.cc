@@ -14,6 +14,7 @@
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/seconds_since.h"
 #include "ergo/mesh/surface_geometry.h"
 #include "ergo/mesh/tet_boundary.h"
 
@@ -131,10 +132,6 @@ std::vector<bool> AttachedFromInnerBoundary(const TetMesh& mesh, const std::stri
                      "give one connected tissue layer");
   }
   return attached;
-}
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::shared_ptr<const LayeredBody> MakeScenarioBody(const std::string& label,

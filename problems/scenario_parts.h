@@ -5,7 +5,6 @@
 // build report. Files are refused with the mesh check's and the readers' messages. SI units.
 #pragma once
 
-#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -80,9 +79,6 @@ struct ScenarioBuildReport {
   std::string negative_image;  // one line when a negative image was made
   double skin_edge = 0;        // mean skin edge near the designed region, m
 };
-
-// Seconds since `start` (the build report's timings).
-double SecondsSince(std::chrono::steady_clock::time_point start);
 
 // The scenario's body: the user's when `user` is set, else `spec()` meshed by the body
 // builder with the edge length and sliver bound (`label` starts the report's body line).

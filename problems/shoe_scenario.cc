@@ -6,6 +6,7 @@
 
 #include "ergo/body/core_lock.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/seconds_since.h"
 #include "problems/profile_block.h"
 
 namespace ergo {

@@ -7,6 +7,8 @@
 
 #include <glog/logging.h>
 
+#include "ergo/mesh/seconds_since.h"
+
 namespace ergo {
 
 RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem,
@@ -24,10 +26,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     state.kept_followed_phi = phi0_fresh;
   }
   const double seconds_before = state.seconds;
-  auto seconds = [&] {
-    return seconds_before +
-           std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  };
+  auto seconds = [&] { return seconds_before + SecondsSince(begin); };
   RoundsResult out;
   const double initial_phi =
       resume && !resume->history.empty() ? resume->history.front().phi : phi0_fresh;

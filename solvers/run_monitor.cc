@@ -6,6 +6,8 @@
 #include <sstream>
 #include <utility>
 
+#include "ergo/mesh/seconds_since.h"
+
 namespace ergo {
 namespace {
 
@@ -31,9 +33,7 @@ RunMonitor::RunMonitor(std::string optimizer, const Budget& budget, const RunCon
       control_(control),
       start_(std::chrono::steady_clock::now()) {}
 
-double RunMonitor::Seconds() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-}
+double RunMonitor::Seconds() const { return SecondsSince(start_); }
 
 bool RunMonitor::StopLocked(const std::string& reason) {
   if (stop_reason_.empty()) stop_reason_ = reason;

@@ -26,6 +26,8 @@ packages=(build-essential cmake pkg-config libeigen3-dev libceres-dev libsuitesp
 [ "$mode" = test ] && packages+=(clang libclang-rt-14-dev libomp-14-dev)
 # The Python bindings' tests (pytest, SciPy's optimisers in the example).
 [ "$mode" = test ] && packages+=(python3-pytest python3-scipy)
+# The VTU test reads the binary files back with meshio (skipped without it).
+[ "$mode" = test ] && packages+=(python3-meshio)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

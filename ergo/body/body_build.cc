@@ -10,6 +10,7 @@
 #include "ergo/body/sample_interpolation.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/seconds_since.h"
 
 namespace ergo {
 namespace {
@@ -131,8 +132,7 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   auto say = [&](const std::string& line) {
     if (!body.progress) return;
     char elapsed[32];
-    std::snprintf(elapsed, sizeof elapsed, "%7.1f s  ",
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+    std::snprintf(elapsed, sizeof elapsed, "%7.1f s  ", SecondsSince(begin));
     body.progress(elapsed + line);
   };
 

@@ -131,7 +131,7 @@ double PositiveNumber(const Json& object, const std::string& key, const std::str
 
 }  // namespace
 
-void SaveBodyDirectory(const std::string& dir, const BodyRecord& body) {
+void SaveBodyDirectory(const std::string& dir, const BodyRecord& body, VtuEncoding view_encoding) {
   const Eigen::Index n = body.rest.vertices.rows(), tets = body.rest.tets.rows();
   CHECK_EQ(static_cast<Eigen::Index>(body.attached.size()), n);
   CHECK_EQ(body.material.youngs_modulus.size(), tets);
@@ -178,7 +178,7 @@ void SaveBodyDirectory(const std::string& dir, const BodyRecord& body) {
   if (body.vertex_depth.size() == n) fields.point_scalars.push_back({"depth_m", body.vertex_depth});
   fields.cell_scalars.push_back({"youngs_modulus_Pa", body.material.youngs_modulus});
   fields.cell_scalars.push_back({"poisson_ratio", body.material.poisson_ratio});
-  WriteVtu(PathIn(dir, kBodyViewFile), body.rest, fields);
+  WriteVtu(PathIn(dir, kBodyViewFile), body.rest, fields, view_encoding);
 
   Json json = Json::object();
   json["format"] = kFormatName;

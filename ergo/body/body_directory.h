@@ -13,6 +13,7 @@
 #include "ergo/body/layered_body.h"
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/tri_mesh.h"
+#include "ergo/mesh/vtu_writer.h"
 
 namespace ergo {
 
@@ -39,9 +40,11 @@ struct BodyRecord {
 };
 
 // Writes the directory (created if missing; existing body files are replaced), each file
-// atomically: body.msh, attached.txt, tet_material.csv, body.vtu, then body.json last, so
-// a directory with a body.json is complete. Throws InputError when `dir` cannot be written.
-void SaveBodyDirectory(const std::string& dir, const BodyRecord& body);
+// atomically: body.msh, attached.txt, tet_material.csv, body.vtu (in `view_encoding`), then
+// body.json last, so a directory with a body.json is complete. Throws InputError when `dir`
+// cannot be written.
+void SaveBodyDirectory(const std::string& dir, const BodyRecord& body,
+                       VtuEncoding view_encoding = VtuEncoding::kBinary);
 
 // Reads a directory written by SaveBodyDirectory. Throws InputError naming the file (and
 // line) for a missing or corrupt file, an unknown format version, or files that disagree

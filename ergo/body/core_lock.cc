@@ -1,8 +1,7 @@
 #include "ergo/body/core_lock.h"
 
-#include <sstream>
-
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/split_list.h"
 
 namespace ergo {
 namespace {
@@ -47,9 +46,7 @@ void ValidateCoreLock(const CoreLock& lock, const std::string& source) {
 CoreLock ParseCoreLock(const std::string& text, const std::string& source) {
   CoreLock lock;
   if (text.empty() || text == "none") return lock;
-  std::stringstream stream(text);
-  std::string name;
-  while (std::getline(stream, name, ',')) {
+  for (const std::string& name : SplitList(text, ',')) {
     bool known = false;
     for (int k = 0; k < 6; ++k) {
       if (name == kNames[k]) {

@@ -13,6 +13,7 @@
 #include <glog/logging.h>
 #include <Eigen/Dense>
 
+#include "ergo/mesh/cgal_surface_mesh.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/surface_geometry.h"
 
@@ -46,23 +47,7 @@ void Planarity(const std::vector<Eigen::Vector3d>& points, double* deviation, do
 }  // namespace
 
 CappedSurface CloseWithFlatCaps(const TriMesh& surface, const std::string& source) {
-  Mesh mesh;
-  std::vector<Mesh::Vertex_index> vertex(static_cast<size_t>(surface.vertices.rows()));
-  for (Eigen::Index v = 0; v < surface.vertices.rows(); ++v) {
-    vertex[v] = mesh.add_vertex(
-        Point(surface.vertices(v, 0), surface.vertices(v, 1), surface.vertices(v, 2)));
-  }
-  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
-    const Mesh::Face_index face =
-        mesh.add_face(vertex[surface.triangles(f, 0)], vertex[surface.triangles(f, 1)],
-                      vertex[surface.triangles(f, 2)]);
-    if (face == Mesh::null_face()) {
-      throw InputError(source, "triangle " + std::to_string(f),
-                       "the triangle cannot be joined to its neighbours (non-manifold edge or "
-                       "vertex, or orientation opposite to a neighbour)",
-                       "run `ergo_mesh check` on the file and repair what it reports");
-    }
-  }
+  Mesh mesh = ToSurfaceMesh<Point>(surface, source);
 
   CappedSurface result;
   std::vector<Mesh::Halfedge_index> loops;
@@ -111,15 +96,7 @@ CappedSurface CloseWithFlatCaps(const TriMesh& surface, const std::string& sourc
 
   // Back to a TriMesh: input vertices keep their indices (caps add no vertices).
   CHECK_EQ(static_cast<Eigen::Index>(mesh.number_of_vertices()), surface.vertices.rows());
-  result.surface.vertices = surface.vertices;
-  result.surface.triangles.resize(static_cast<Eigen::Index>(mesh.number_of_faces()), 3);
-  Eigen::Index row = 0;
-  for (Mesh::Face_index f : mesh.faces()) {
-    int k = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      result.surface.triangles(row, k++) = static_cast<int>(v.idx());
-    ++row;
-  }
+  result.surface = FromSurfaceMesh(mesh);
   // Outward orientation: the enclosed signed volume must be positive.
   if (EnclosedVolume(result.surface) < 0) {
     result.surface.triangles.col(1).swap(result.surface.triangles.col(2));

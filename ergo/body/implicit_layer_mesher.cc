@@ -15,6 +15,8 @@
 #include <CGAL/refine_mesh_3.h>
 #include <glog/logging.h>
 
+#include "ergo/mesh/seconds_since.h"
+
 namespace ergo {
 namespace {
 
@@ -61,10 +63,6 @@ bool InitialiseWithSeeds(const std::vector<SurfaceSeed>& skin, const std::vector
     if (function(tr.dual(c)) == kLayerRegion) return true;
   }
   return false;
-}
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "ergo/body/hole_filling.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_check.h"
+#include "ergo/mesh/seconds_since.h"
 #include "ergo/mesh/tet_boundary.h"
 
 namespace ergo {
@@ -487,7 +488,7 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
     built.vertex_depth[v] = core_distance.Nearest(q).distance;
   }
   built.skin = skin;
-  report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  report.total_seconds = SecondsSince(start);
   return built;
 }
 
@@ -568,7 +569,7 @@ BuiltLayer BuildLayerFromSurface(const TriMesh& skin, const SampleInterpolant& d
   std::vector<std::string> notes = capped.notes;
   notes.insert(notes.end(), built.report.notes.begin(), built.report.notes.end());
   built.report.notes = std::move(notes);
-  built.report.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  built.report.total_seconds = SecondsSince(start);
   return built;
 }
 

@@ -28,12 +28,9 @@
 #include "ergo/body/layered_body.h"
 #include "ergo/body/reduced_layout.h"
 #include "ergo/body/tet_kernel.h"
+#include "ergo/mesh/eigen_types.h"
 
 namespace ergo {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-using Vector6d = Eigen::Matrix<double, 6, 1>;
 
 class ReducedSystem {
  public:

@@ -12,25 +12,28 @@
 #include <Eigen/Dense>
 
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/split_list.h"
 #include "ergo/mesh/text_reader.h"
 
 namespace ergo {
 namespace {
 
-// Splits a CSV line at commas (semicolons and tabs accepted too), trimming blanks.
-std::vector<std::string_view> SplitCsv(std::string_view line) {
-  std::vector<std::string_view> fields;
-  size_t start = 0;
-  for (size_t i = 0; i <= line.size(); ++i) {
-    if (i == line.size() || line[i] == ',' || line[i] == ';' || line[i] == '\t') {
-      std::string_view field = line.substr(start, i - start);
-      while (!field.empty() && (field.front() == ' ' || field.front() == '\r'))
-        field.remove_prefix(1);
-      while (!field.empty() && (field.back() == ' ' || field.back() == '\r'))
-        field.remove_suffix(1);
-      fields.push_back(field);
-      start = i + 1;
+// Splits a CSV row at commas (semicolons and tabs accepted too), trimming blanks and '\r'.
+// Unlike a flag's list (SplitList), a row that ends with a separator has an empty last
+// column, so "1,2,3,4," is reported as five columns.
+std::vector<std::string> SplitCsv(std::string_view line) {
+  std::string row(line);
+  std::replace_if(
+      row.begin(), row.end(), [](char c) { return c == ';' || c == '\t'; }, ',');
+  std::vector<std::string> fields = SplitList(row, ',');
+  if (row.empty() || row.back() == ',') fields.emplace_back();
+  for (std::string& field : fields) {
+    const size_t first = field.find_first_not_of(" \r");
+    if (first == std::string::npos) {
+      field.clear();
+      continue;
     }
+    field = field.substr(first, field.find_last_not_of(" \r") - first + 1);
   }
   return fields;
 }
@@ -68,7 +71,7 @@ PointSamples ReadPointSamplesCsv(const std::string& path, const SampleCsvOptions
   while (reader.NextLine(&line)) {
     const std::string trimmed = Trim(line);
     if (trimmed.empty() || trimmed[0] == '#') continue;
-    const std::vector<std::string_view> fields = SplitCsv(trimmed);
+    const std::vector<std::string> fields = SplitCsv(trimmed);
     double number[4];
     bool numeric = fields.size() == 4;
     for (size_t k = 0; numeric && k < 4; ++k) numeric = ParseDouble(fields[k], &number[k]);

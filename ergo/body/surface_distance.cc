@@ -9,6 +9,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <glog/logging.h>
 
+#include "ergo/mesh/cgal_surface_mesh.h"
+#include "ergo/mesh/input_error.h"
+
 namespace ergo {
 namespace {
 
@@ -59,21 +62,14 @@ struct SurfaceDistance::Impl {
 
 SurfaceDistance::SurfaceDistance(const TriMesh& surface) : impl_(std::make_unique<Impl>()) {
   CHECK_GT(surface.triangles.rows(), 0) << "SurfaceDistance needs a non-empty surface";
+  // Faces keep the input order (face index == triangle index). The surface was checked for
+  // manifoldness before it got here, so a triangle that cannot be added is a bug.
+  try {
+    impl_->mesh = ToSurfaceMesh<Point>(surface, "SurfaceDistance");
+  } catch (const InputError& error) {
+    LOG(FATAL) << error.what();
+  }
   Mesh& mesh = impl_->mesh;
-  std::vector<Mesh::Vertex_index> vertex(static_cast<size_t>(surface.vertices.rows()));
-  for (Eigen::Index v = 0; v < surface.vertices.rows(); ++v) {
-    vertex[v] = mesh.add_vertex(
-        Point(surface.vertices(v, 0), surface.vertices(v, 1), surface.vertices(v, 2)));
-  }
-  for (Eigen::Index f = 0; f < surface.triangles.rows(); ++f) {
-    const Mesh::Face_index face =
-        mesh.add_face(vertex[surface.triangles(f, 0)], vertex[surface.triangles(f, 1)],
-                      vertex[surface.triangles(f, 2)]);
-    // Faces keep the input order (face index == triangle index); the surface was checked
-    // for manifoldness before it got here.
-    CHECK(face != Mesh::null_face()) << "triangle " << f << " makes the surface non-manifold";
-    CHECK_EQ(static_cast<Eigen::Index>(face.idx()), f);
-  }
   impl_->tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);
   impl_->tree->build();
   impl_->tree->accelerate_distance_queries();  // built now, so queries are const/thread-safe

@@ -10,15 +10,9 @@
 #include <Eigen/Core>
 
 #include "ergo/contact/feature.h"
+#include "ergo/mesh/eigen_types.h"
 
 namespace ergo {
-
-using Vector6d = Eigen::Matrix<double, 6, 1>;
-using Vector9d = Eigen::Matrix<double, 9, 1>;
-using Vector12d = Eigen::Matrix<double, 12, 1>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-using Matrix9d = Eigen::Matrix<double, 9, 9>;
-using Matrix12d = Eigen::Matrix<double, 12, 12>;
 
 // ---- Vertex region (Eq. 24–26): E = k‖p − v‖². Variables ordered (p, v). ----
 

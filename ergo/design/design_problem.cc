@@ -6,19 +6,16 @@
 
 #include <glog/logging.h>
 
-#include "ergo/mesh/preconditioned_cg.h"
 #include "ergo/design/score_gradient.h"
 #include "ergo/equilibrium/placement.h"
+#include "ergo/mesh/preconditioned_cg.h"
+#include "ergo/mesh/seconds_since.h"
 #include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The options with the contact's skin share fixed from the initial support (so that every
 // design, and a fresh problem on the final design, uses the same contact model).

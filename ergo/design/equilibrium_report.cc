@@ -26,7 +26,7 @@ Json StatisticsJson(const PressureStatistics& s) {
 }  // namespace
 
 void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, const BodyState& state,
-                          const ContactPressures& pressures) {
+                          const ContactPressures& pressures, VtuEncoding encoding) {
   const Vertices positions = DeformedPositions(body, state);
   const Eigen::Index n = positions.rows();
   Eigen::VectorXd pressure = Eigen::VectorXd::Zero(n), smoothed = Eigen::VectorXd::Zero(n),
@@ -47,11 +47,12 @@ void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, cons
   fields.point_vectors = {{"displacement_m", positions - body.rest().vertices},
                           {"contact_force_N", force}};
   fields.cell_scalars = {{"youngs_modulus_Pa", body.material().youngs_modulus}};
-  WriteVtu(path, TetMesh{positions, body.rest().tets}, fields);
+  WriteVtu(path, TetMesh{positions, body.rest().tets}, fields, encoding);
 }
 
 void WriteSupportVtu(const std::string& path, const TriMesh& support,
-                     const ContactPressures& pressures, const Vertices& initial) {
+                     const ContactPressures& pressures, const Vertices& initial,
+                     VtuEncoding encoding) {
   const Eigen::Index n = support.vertices.rows();
   const Eigen::Matrix<double, Eigen::Dynamic, 3> force = pressures.contacts.support_force;
   VtuFields fields;
@@ -61,7 +62,7 @@ void WriteSupportVtu(const std::string& path, const TriMesh& support,
   fields.point_vectors = {{"contact_force_N", force}};
   if (initial.rows() == n)
     fields.point_vectors.push_back({"displacement_m", support.vertices - initial});
-  WriteVtu(path, support, fields);
+  WriteVtu(path, support, fields, encoding);
 }
 
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,

@@ -10,6 +10,7 @@
 #include "ergo/design/contact_pressures.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/json.h"
+#include "ergo/mesh/vtu_writer.h"
 
 namespace ergo {
 
@@ -17,13 +18,15 @@ namespace ergo {
 // vertices, 0 elsewhere), attached, displacement_m, contact_force_N; cell field
 // youngs_modulus_Pa.
 void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, const BodyState& state,
-                          const ContactPressures& pressures);
+                          const ContactPressures& pressures,
+                          VtuEncoding encoding = VtuEncoding::kBinary);
 
 // Writes the support surface: point fields pressure_Pa and smoothed_pressure_Pa (support
 // vertices inside the skin), contact_force_N, and displacement_m from `initial` (optional:
 // pass an empty matrix to skip).
 void WriteSupportVtu(const std::string& path, const TriMesh& support,
-                     const ContactPressures& pressures, const Vertices& initial);
+                     const ContactPressures& pressures, const Vertices& initial,
+                     VtuEncoding encoding = VtuEncoding::kBinary);
 
 // The summary of an equilibrium: converged, status, reason, iterations, residual_N,
 // contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,

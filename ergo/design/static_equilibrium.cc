@@ -10,6 +10,7 @@
 #include "ergo/equilibrium/placement.h"
 #include "ergo/ergonomics/pressure_cost.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/seconds_since.h"
 
 namespace ergo {
 namespace {
@@ -57,7 +58,7 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   RequireOption(options.max_seconds >= 0 && std::isfinite(options.max_seconds), "max_seconds",
                 "must be >= 0 seconds", "0 = no limit");
   const auto begin = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - begin).count(); };
+  auto elapsed = [&] { return SecondsSince(begin); };
   auto say = [&](const std::string& line) {
     if (options.progress) options.progress(Format("%7.1f s  ", elapsed()) + line);
   };

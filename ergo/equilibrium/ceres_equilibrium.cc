@@ -6,6 +6,8 @@
 #include <ceres/gradient_problem.h>
 #include <glog/logging.h>
 
+#include "ergo/mesh/seconds_since.h"
+
 namespace ergo {
 namespace {
 
@@ -107,8 +109,7 @@ EquilibriumResult SolveEquilibriumWithCeres(const TotalPotential& potential, con
   result.status =
       result.converged ? EquilibriumStatus::kConverged : EquilibriumStatus::kIterationCap;
   result.message = "ceres: " + summary.message;
-  result.total_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  result.total_seconds = SecondsSince(begin);
   return result;
 }
 

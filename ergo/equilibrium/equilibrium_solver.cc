@@ -10,15 +10,12 @@
 
 #include "ergo/equilibrium/golden_section.h"
 #include "ergo/mesh/preconditioned_cg.h"
+#include "ergo/mesh/seconds_since.h"
 
 namespace ergo {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Trace of the diagonal of an upper-triangular compressed matrix.
 double DiagonalSum(const SparseMatrix& upper) {

@@ -5,12 +5,10 @@
 #include <glog/logging.h>
 #include <Eigen/Eigenvalues>
 
+#include "ergo/mesh/seconds_since.h"
+
 namespace ergo {
 namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 SurfaceContact MakeSurfaceContact(const LayeredBody& body, const SurfaceContactOptions& options) {
   const Skin& skin = body.skin();

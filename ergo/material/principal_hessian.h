@@ -7,14 +7,12 @@
 #include <Eigen/Core>
 
 #include "ergo/material/rotation_variant_svd.h"
+#include "ergo/mesh/eigen_types.h"
 
 namespace ergo {
 
-// vec(F) ordering used by every 9-vector and 9x9 matrix of ergo/material: column-major,
+// vec(F) ordering of every Vector9d and Matrix9d in ergo/material: column-major,
 // vec(F)[a + 3 b] = F(a, b) (Eigen's storage order for Matrix3d).
-using Vector9d = Eigen::Matrix<double, 9, 1>;
-using Matrix9d = Eigen::Matrix<double, 9, 9>;
-using Matrix12d = Eigen::Matrix<double, 12, 12>;
 
 // d2psi/dF2 in the frame F = U diag(sigma) V^T, in Pa: the 3x3 block d2psi/dsigma2 and,
 // for each pair (i, j) in the order (0,1), (0,2), (1,2), the two eigenvalues of its 2x2

@@ -9,10 +9,10 @@
 #include <Eigen/Core>
 
 #include "ergo/material/neo_hookean.h"
+#include "ergo/mesh/eigen_types.h"
 
 namespace ergo {
 
-using Vector12d = Eigen::Matrix<double, 12, 1>;
 // Column v is vertex v; column-major storage makes it the same memory as a Vector12d.
 using TetPositions = Eigen::Matrix<double, 3, 4>;
 

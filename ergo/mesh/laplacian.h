@@ -8,11 +8,10 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "ergo/mesh/eigen_types.h"
 #include "ergo/mesh/tri_mesh.h"
 
 namespace ergo {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 // L = I − A, #V x #V, A_ij = 1/deg(i) for each edge neighbour j of i (deg = number of
 // distinct neighbours). Rows sum to zero. A vertex with no neighbours has an all-zero

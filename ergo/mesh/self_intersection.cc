@@ -12,6 +12,8 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
+#include "ergo/mesh/seconds_since.h"
+
 namespace ergo {
 
 namespace {
@@ -201,7 +203,7 @@ SelfIntersections FindSelfIntersections(const TriMesh& mesh,
     result.skipped_because = std::string("CGAL failed: ") + error.what();
   }
   std::sort(result.pairs.begin(), result.pairs.end());
-  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.seconds = SecondsSince(start);
   return result;
 }
 

@@ -39,6 +39,13 @@ ToolRun RunTool(const std::string& arguments) {
   return run;
 }
 
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 // A 10 cm ball in millimetres, and stiffness samples at two poles.
 std::string Inputs() {
   const std::string dir = testing::MakeScratchDir("tool_in");
@@ -80,16 +87,22 @@ TEST(Body, ToolBuildsABodyDirectoryFromASurface) {
   // And the directory loads.
   const LayeredBody body = LoadLayeredBody(out);
   EXPECT_NEAR(body.total_mass(), GetNumber(summary, "mass_kg", "summary"), 1e-9);
+  // The ParaView view is binary by default.
+  EXPECT_NE(ReadText(out + "/" + kBodyViewFile).find("<AppendedData encoding=\"raw\">"),
+            std::string::npos);
 }
 
 TEST(Body, ToolBuildsAnImplicitShell) {
   const std::string out = testing::MakeScratchDir("tool_shell") + "/shell";
   const ToolRun run = RunTool(
       "build --shape=sphere_shell --outer_radius=0.1 --core_radius=0.06 "
-      "--youngs_modulus=1e4 --core_mass=2 --edge_length=0.025 --out=" +
+      "--youngs_modulus=1e4 --core_mass=2 --edge_length=0.025 --vtu_format=ascii --out=" +
       out);
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(LoadLayeredBody(out).core_mass(), 2.0);
+  const std::string view = ReadText(out + "/" + kBodyViewFile);
+  EXPECT_NE(view.find("format=\"ascii\""), std::string::npos);
+  EXPECT_EQ(view.find("AppendedData"), std::string::npos);
   const ToolRun quiet = RunTool(
       "build --shape=sphere_shell --outer_radius=0.1 --core_radius=0.06 --youngs_modulus=1e4 "
       "--edge_length=0.025 --progress=false --out=" +

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "ergo/mesh/mesh_check.h"
+#include "ergo/mesh/seconds_since.h"
 #include "tests/support/test_paths.h"
 
 namespace ergo {
@@ -63,8 +64,7 @@ TEST(Mesh, PeerCorpusEveryFileGetsAVerdictAndMessage) {
     const std::string path = dir + "/" + file.path;
     const auto start = std::chrono::steady_clock::now();
     const MeshCheckReport report = CheckMeshFile(path);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = SecondsSince(start);
     timings.emplace_back(seconds, file.path);
     const int exit_code = report.ExitCode();
     ++by_exit_code[exit_code];

@@ -6,12 +6,13 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "ergo/design/design_problem.h"
+#include "ergo/mesh/seconds_since.h"
+#include "ergo/mesh/split_list.h"
 #include "problems/chair_scenario.h"
 #include "problems/mouse_scenario.h"
 #include "problems/shoe_scenario.h"
@@ -22,9 +23,7 @@ namespace {
 bool Selected(const std::string& scenario, const std::string& preset, const std::string& start) {
   const char* filter = std::getenv("ERGO_MEASURE");
   if (filter == nullptr) return true;
-  std::stringstream items(filter);
-  std::string item;
-  while (std::getline(items, item, ',')) {
+  for (const std::string& item : SplitList(filter, ',')) {
     if (item != scenario && item != preset && item != start) return false;
   }
   return true;
@@ -37,8 +36,7 @@ void Measure(const std::string& scenario_name, const std::string& preset, bool n
   const auto begin = std::chrono::steady_clock::now();
   ScenarioBuildReport report;
   const Scenario scenario = make(&report);
-  const double build =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const double build = SecondsSince(begin);
   DesignProblem problem = scenario.MakeProblem();
   const DesignEvaluation e = problem.Evaluate(problem.InitialDesign(), false);
   const EquilibriumResult& q = e.equilibrium;

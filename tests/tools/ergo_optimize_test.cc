@@ -18,6 +18,7 @@
 
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/mesh_check.h"
+#include "ergo/mesh/seconds_since.h"
 #include "tests/support/test_paths.h"
 #include "tools/common/child_process.h"
 
@@ -148,8 +149,7 @@ pid_t Start(const std::vector<std::string>& arguments, const std::string& log) {
 // Waits until `log` holds `text` (or the process ended); false on a timeout of `seconds`.
 bool WaitFor(pid_t pid, const std::string& log, const std::string& text, double seconds) {
   const auto begin = std::chrono::steady_clock::now();
-  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() <
-         seconds) {
+  while (SecondsSince(begin) < seconds) {
     if (Read(log).find(text) != std::string::npos) return true;
     if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(200));

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/split_list.h"
 
 namespace ergo {
 namespace {
@@ -44,9 +45,9 @@ void CheckFlag(const std::string& argument, const std::string& where, std::set<s
     const size_t equals = argument.find('=');
     if (equals == std::string::npos)
       throw InputError("--flagfile", "", "needs a file", "write --flagfile=data/shoe.flags");
-    std::stringstream files(argument.substr(equals + 1));
-    std::string file;
-    while (std::getline(files, file, ',')) CheckFlagfile(file, seen, depth + 1);
+    // gflags reads the list the same way (a trailing comma ends the last file name).
+    for (const std::string& file : SplitList(argument.substr(equals + 1), ','))
+      CheckFlagfile(file, seen, depth + 1);
   }
 }
 

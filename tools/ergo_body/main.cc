@@ -23,7 +23,9 @@
 #include "ergo/body/body_directory.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/length_unit.h"
+#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
+#include "tools/common/vtu_flags.h"
 
 DEFINE_string(surface, "", "closed or open (flat-cut) skin surface: .obj .off .ply .stl .msh");
 DEFINE_string(unit, "m", "unit of --surface and of the CSVs' x,y,z and depth: m or mm");
@@ -69,9 +71,7 @@ bool Given(const char* name) { return !gflags::GetCommandLineFlagInfoOrDie(name)
 
 Eigen::Vector3d ParseTriple(const std::string& flag, const std::string& text) {
   std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
+  for (const std::string& item : SplitList(text, ',')) {
     try {
       size_t used = 0;
       values.push_back(std::stod(item, &used));
@@ -89,6 +89,7 @@ Eigen::Vector3d ParseTriple(const std::string& flag, const std::string& text) {
 
 int Build() {
   if (FLAGS_out.empty()) FlagError("out", "is required", "give the output directory, --out=DIR");
+  const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
   BodyBuildOptions options;
   if (!ParseLengthUnit(FLAGS_unit, &options.unit))
     FlagError("unit", "must be m or mm", "--unit=mm");
@@ -118,7 +119,7 @@ int Build() {
     };
   }
   const BuiltBody built = BuildBody(options);
-  SaveBodyDirectory(FLAGS_out, built.record);
+  SaveBodyDirectory(FLAGS_out, built.record, vtu_encoding);
   std::cout << built.report;
   std::cout << "wrote " << FLAGS_out << "/{" << kBodyJsonFile << ", " << kBodyMeshFile << ", "
             << kBodyAttachedFile << ", " << kBodyMaterialFile << ", " << kBodyViewFile << "}\n";

@@ -3,13 +3,13 @@
 // (width, frequency, ζ₂, ζ₃, ζ₄ and each rescaled to agree at the lowest frequency).
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/split_list.h"
 #include "problems/bump_experiment.h"
 #include "tools/common/flag_checks.h"
 
@@ -28,9 +28,7 @@ namespace {
 
 std::vector<double> ParseList(const std::string& text, const std::string& flag) {
   std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : SplitList(text, ',')) {
     char* end = nullptr;
     const double value = std::strtod(item.c_str(), &end);
     if (end == item.c_str() || *end != '\0' || !(value > 0)) {

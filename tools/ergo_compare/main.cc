@@ -25,7 +25,6 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -34,6 +33,7 @@
 
 #include "ergo/design/placement_checks.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/split_list.h"
 #include "solvers/design_objective.h"
 #include "solvers/fresh_rounds.h"
 #include "solvers/history_csv.h"
@@ -93,20 +93,17 @@ constexpr char kUsage[] =
   throw InputError("--" + flag, "", what, fix);
 }
 
-std::vector<std::string> SplitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
+// The comma-separated items of a flag, empty ones skipped.
+std::vector<std::string> NonEmptyItems(const std::string& text) {
+  std::vector<std::string> items = SplitList(text, ',');
+  items.erase(std::remove(items.begin(), items.end(), std::string()), items.end());
   return items;
 }
 
 OptimizerOptions OptionsFromFlags() {
   OptimizerOptions options;
   options.probes.moves.clear();
-  for (const std::string& item : SplitList(FLAGS_probe_moves_mm)) {
+  for (const std::string& item : NonEmptyItems(FLAGS_probe_moves_mm)) {
     double value = 0;
     try {
       size_t used = 0;
@@ -221,7 +218,7 @@ void Plot(const std::string& out_dir, const std::string& final_dir) {
 }
 
 int Compare() {
-  std::vector<std::string> names = SplitList(FLAGS_optimizers);
+  std::vector<std::string> names = NonEmptyItems(FLAGS_optimizers);
   if (names.empty()) FlagError("optimizers", "is empty", "e.g. --optimizers=paper-ncg,steepest");
   const OptimizerOptions options = OptionsFromFlags();
   const Budget budget = BudgetFromFlags();

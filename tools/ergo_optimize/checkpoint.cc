@@ -62,6 +62,7 @@ std::string RunFingerprint() {
                                                  "threads",
                                                  "progress",
                                                  "plot",
+                                                 "vtu_format",
                                                  "checkpoint_every",
                                                  "flagfile",
                                                  "fromenv",

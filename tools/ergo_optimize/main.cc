@@ -25,6 +25,7 @@
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/laplacian.h"
+#include "ergo/mesh/seconds_since.h"
 #include "solvers/design_objective.h"
 #include "solvers/fresh_rounds.h"
 #include "solvers/history_csv.h"
@@ -36,6 +37,7 @@
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
+#include "tools/common/vtu_flags.h"
 #include "tools/ergo_optimize/checkpoint.h"
 #include "tools/ergo_optimize/run_outputs.h"
 #include "tools/ergo_optimize/run_summary.h"
@@ -141,6 +143,7 @@ void Plot(const std::string& dir) {
 
 int Run() {
   ValidateRunFlags();
+  const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
   StopOnSignals signals;
   OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
@@ -341,14 +344,15 @@ int Run() {
     }
   }
   summary.interrupted = StopOnSignals::stopped();
-  summary.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  summary.wall_seconds = SecondsSince(begin);
 
   // Outputs, into the temporary directory that becomes --out as a whole.
   const std::filesystem::path out(output.path());
   const Vertices& initial_support = scenario.support.vertices;
-  WriteDesignFiles(out.string(), "initial", *scenario.body, summary.initial, initial_support);
-  WriteDesignFiles(out.string(), "optimized", *scenario.body, summary.optimized, initial_support);
+  WriteDesignFiles(out.string(), "initial", *scenario.body, summary.initial, initial_support,
+                   vtu_encoding);
+  WriteDesignFiles(out.string(), "optimized", *scenario.body, summary.optimized, initial_support,
+                   vtu_encoding);
   WriteHistoryCsv((out / "history.csv").string(), summary.result);
   WriteJsonFile((out / "summary.json").string(), SummaryJson(summary));
   const std::string markdown = SummaryMarkdown(summary);

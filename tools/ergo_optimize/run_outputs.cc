@@ -94,12 +94,13 @@ DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
 }
 
 void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
-                      const DesignReport& report, const Vertices& initial_support) {
+                      const DesignReport& report, const Vertices& initial_support,
+                      VtuEncoding vtu_encoding) {
   const std::filesystem::path out(dir);
   WriteDeformedBodyVtu((out / ("body_" + tag + ".vtu")).string(), body,
-                       report.evaluation.equilibrium.state, report.pressures);
+                       report.evaluation.equilibrium.state, report.pressures, vtu_encoding);
   WriteSupportVtu((out / ("support_" + tag + ".vtu")).string(), report.support, report.pressures,
-                  initial_support);
+                  initial_support, vtu_encoding);
   WriteOptions millimetres;
   millimetres.unit = LengthUnit::kMillimetre;
   WriteTriMesh((out / ("support_" + tag + ".ply")).string(), report.support, millimetres);

@@ -12,6 +12,7 @@
 #include "ergo/design/contact_pressures.h"
 #include "ergo/design/design_problem.h"
 #include "ergo/mesh/json.h"
+#include "ergo/mesh/vtu_writer.h"
 #include "problems/scenario.h"
 
 namespace ergo {
@@ -33,10 +34,11 @@ DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x);
 DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorXd& x,
                               DesignEvaluation evaluation);
 
-// DIR/body_TAG.vtu, DIR/support_TAG.vtu (displacement from `initial_support`),
-// DIR/support_TAG.ply and DIR/support_TAG.stl (binary, millimetres).
+// DIR/body_TAG.vtu, DIR/support_TAG.vtu (displacement from `initial_support`; both in
+// `vtu_encoding`), DIR/support_TAG.ply and DIR/support_TAG.stl (binary, millimetres).
 void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
-                      const DesignReport& report, const Vertices& initial_support);
+                      const DesignReport& report, const Vertices& initial_support,
+                      VtuEncoding vtu_encoding);
 
 // The data tools/plot_results.py draws: skin pressure seen along the load for both designs,
 // the designed region's displacement.

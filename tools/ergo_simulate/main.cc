@@ -24,9 +24,11 @@
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
+#include "tools/common/vtu_flags.h"
 
 DEFINE_string(body, "", "body directory written by `ergo_body build` (required)");
 DEFINE_string(support, "", "support surface mesh: .obj .off .ply .stl .msh (required, closed)");
@@ -56,11 +58,9 @@ namespace ergo {
 namespace {
 
 Eigen::Vector3d ParseVector(const std::string& text, const std::string& flag) {
-  std::stringstream stream(text);
   Eigen::Vector3d v;
-  std::string item;
   int k = 0;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : SplitList(text, ',')) {
     char* end = nullptr;
     const double value = std::strtod(item.c_str(), &end);
     if (k >= 3 || end == item.c_str() || *end != '\0' || !std::isfinite(value)) {
@@ -114,6 +114,7 @@ int Run() {
                      "use --unit=m or --unit=mm");
   if (FLAGS_place != "auto" && FLAGS_place != "none")
     throw InputError("--place", "", "'" + FLAGS_place + "'", "use auto or none");
+  const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
 
   LayeredBodyOptions scenario;
@@ -179,8 +180,10 @@ int Run() {
   }
 
   const std::filesystem::path out(output.path());
-  WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, solved.pressures);
-  WriteSupportVtu((out / "support.vtu").string(), support_mesh, solved.pressures, Vertices());
+  WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, solved.pressures,
+                       vtu_encoding);
+  WriteSupportVtu((out / "support.vtu").string(), support_mesh, solved.pressures, Vertices(),
+                  vtu_encoding);
   Json summary = solved.summary;
   summary["body_directory"] = FLAGS_body;
   summary["support_file"] = FLAGS_support;
