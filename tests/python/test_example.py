@@ -17,6 +17,6 @@ def test_scipy_shoe_example_runs(source_dir, tmp_path):
         capture_output=True, text=True, env=dict(os.environ), timeout=800)
     assert completed.returncode == 0, completed.stdout + completed.stderr
     result = json.loads((out / "result.json").read_text())
-    assert 1 <= result["evaluations"] <= 4  # L-BFGS-B may exceed maxfun by its last step
+    assert result["evaluations"] == 3  # the budget is enforced by the example itself
     assert result["optimized_fresh_phi"] > 0 and result["initial_fresh_phi"] > 0
     assert (out / "pressure_maps.png").stat().st_size > 10000
