@@ -23,8 +23,8 @@ DesignOptions WithContactShare(const DesignOptions& options, const LayeredBody& 
                                const TriMesh& support) {
   DesignOptions out = options;
   if (out.equilibrium.contact_skin_share == 0) {
-    out.equilibrium.contact_skin_share = ContactSkinShare(
-        body.skin().rest_areas, BarycentricVertexAreas(support), options.active);
+    out.equilibrium.contact_skin_share =
+        ContactSkinShare(body.skin().rest_areas, BarycentricVertexAreas(support), options.active);
   }
   return out;
 }
@@ -84,8 +84,7 @@ void DesignProblem::set_start(const BodyState& start) {
 }
 
 BodyState DesignProblem::FreshStart() const {
-  const PlacementResult placed =
-      PlaceAboveSupport(body_, start_, support_, options_.placement_gap);
+  const PlacementResult placed = PlaceAboveSupport(body_, start_, support_, options_.placement_gap);
   return placed.found ? placed.state : start_;
 }
 
@@ -120,12 +119,14 @@ BodyState DesignProblem::TangentPrediction(const Eigen::VectorXd& x) const {
   const Eigen::VectorXd rhs =
       -potential.system().ReduceVertexGradient(last_state_, e.positions, change);
   if (!(rhs.squaredNorm() > 0)) return last_state_;
-  const PcgResult cg = PreconditionedConjugateGradient(e.body.hessian, solver_.factor(), rhs, 1e-6, 20);
+  const PcgResult cg =
+      PreconditionedConjugateGradient(e.body.hessian, solver_.factor(), rhs, 1e-6, 20);
   if (!cg.converged || !cg.x.allFinite()) return last_state_;
   const BodyState predicted = potential.system().layout().Retract(last_state_, cg.x);
   const double predicted_energy = potential.Energy(predicted, support_);
   const double warm_energy = potential.Energy(last_state_, support_);
-  return std::isfinite(predicted_energy) && predicted_energy < warm_energy ? predicted : last_state_;
+  return std::isfinite(predicted_energy) && predicted_energy < warm_energy ? predicted
+                                                                           : last_state_;
 }
 
 void DesignProblem::Remember(const Eigen::VectorXd& x, const BodyState& state) {
@@ -160,8 +161,8 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     // A path starts with the body placed afresh.
     bool from_last = false;
     solve_start = cache_.empty() ? FreshStart() : WarmStart(x, &from_last);
-    if (from_last && last_solve_ok_ && options_.tangent_predictor &&
-        solver_.last_hessian_exact() && solver_.factor().factorized())
+    if (from_last && last_solve_ok_ && options_.tangent_predictor && solver_.last_hessian_exact() &&
+        solver_.factor().factorized())
       solve_start = TangentPrediction(x);
   } else if (options_.placement == DesignPlacement::kFresh) {
     solve_start = FreshStart();
@@ -219,7 +220,8 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     const Clock::time_point adjoint_begin = Clock::now();
     ScorePartials partials = PressureScorePartials(out.pressures, body_);
     // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
-    const Eigen::VectorXd rhs = potential.system().ReduceVertexGradient(state, e.positions, partials.body);
+    const Eigen::VectorXd rhs =
+        potential.system().ReduceVertexGradient(state, e.positions, partials.body);
     if (rhs.squaredNorm() > 0) {
       // The adjoint system with the exact K̂ at y*: conjugate gradients preconditioned by the
       // Newton factor (of K̂ at the last iterate, next to y*), else a fresh factorisation.
@@ -284,6 +286,29 @@ double AutoGammaFrom(const DesignEvaluation& at, int power_of_ten, std::string* 
     *message = "γ = κ·10^" + std::to_string(power_of_ten) +
                " with κ = ζ(x₀)/ψ(x₀) = " + std::to_string(kappa);
   return kappa * std::pow(10.0, power_of_ten);
+}
+
+const char* DesignPlacementName(DesignPlacement placement) {
+  switch (placement) {
+    case DesignPlacement::kFresh:
+      return "fresh";
+    case DesignPlacement::kFollowed:
+      return "followed";
+    case DesignPlacement::kAnchored:
+      return "anchored";
+  }
+  return "?";
+}
+
+bool ParseDesignPlacement(const std::string& name, DesignPlacement* placement) {
+  for (DesignPlacement candidate :
+       {DesignPlacement::kFresh, DesignPlacement::kFollowed, DesignPlacement::kAnchored}) {
+    if (name == DesignPlacementName(candidate)) {
+      *placement = candidate;
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace ergo

@@ -39,7 +39,8 @@ enum class DesignPlacement {
   // of the design alone (DESIGN.md §8), and a design is judged as it will be used.
   kFresh,
   // Warm-started from the equilibrium of the nearest design evaluated before (the paper's
-  // §4.1; the first evaluation places the body afresh): cheaper, but contact with a sculpted support can have several nearby equilibria,
+  // §4.1; the first evaluation places the body afresh): cheaper, but contact with a sculpted
+  // support can have several nearby equilibria,
   // and a gain may exist only on the path the optimiser followed.
   kFollowed,
   // Fresh placements as anchors: a design within `anchor_move` (largest vertex move) of an
@@ -50,11 +51,15 @@ enum class DesignPlacement {
   kAnchored,
 };
 
+// "fresh", "followed", "anchored"; and back (false for any other word).
+const char* DesignPlacementName(DesignPlacement placement);
+bool ParseDesignPlacement(const std::string& name, DesignPlacement* placement);
+
 struct DesignOptions {
   EquilibriumOptions equilibrium;
   DesignPlacement placement = DesignPlacement::kFresh;
-  double placement_gap = 1e-3;  // m, for kFresh and kAnchored
-  double anchor_move = 5e-4;    // m, for kAnchored
+  double placement_gap = 1e-3;             // m, for kFresh and kAnchored
+  double anchor_move = 5e-4;               // m, for kAnchored
   PressureCostOptions pressure;            // exponent e, smoothing λ_p
   TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
   double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
@@ -149,9 +154,9 @@ class DesignProblem {
   ContactPressureEvaluator pressures_;  // skin/support springs → pressures
   EquilibriumSolver solver_;
   SparseCholesky adjoint_cholesky_;  // exact K̂ at y*, same pattern as Newton
-  BodyState start_;  // the placement every kFresh evaluation starts from
+  BodyState start_;                  // the placement every kFresh evaluation starts from
   BodyState last_state_;
-  Eigen::VectorXd last_x_;  // the design of last_state_ (empty until a solve converged)
+  Eigen::VectorXd last_x_;      // the design of last_state_ (empty until a solve converged)
   bool last_solve_ok_ = false;  // the solver's last evaluation is at last_state_
   std::vector<std::pair<Eigen::VectorXd, BodyState>> cache_;
   std::vector<std::pair<Eigen::VectorXd, BodyState>> anchors_;  // kAnchored: fresh placements

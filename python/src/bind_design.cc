@@ -41,22 +41,9 @@ struct ProblemHandle {
   std::shared_ptr<std::mutex> mutex = std::make_shared<std::mutex>();
 };
 
-const char* PlacementName(DesignPlacement placement) {
-  switch (placement) {
-    case DesignPlacement::kFresh:
-      return "fresh";
-    case DesignPlacement::kFollowed:
-      return "followed";
-    case DesignPlacement::kAnchored:
-      return "anchored";
-  }
-  return "?";
-}
-
 DesignPlacement ParsePlacement(const std::string& name) {
-  if (name == "fresh") return DesignPlacement::kFresh;
-  if (name == "followed") return DesignPlacement::kFollowed;
-  if (name == "anchored") return DesignPlacement::kAnchored;
+  DesignPlacement placement;
+  if (ParseDesignPlacement(name, &placement)) return placement;
   throw InputError("placement", "", "\"" + name + "\" is not fresh, followed or anchored",
                    "fresh scores the body placed afresh on the design (the headline score)");
 }
@@ -227,7 +214,9 @@ void BindDesign(py::module_& m) {
       .def("initial_design", [](const ProblemHandle& h) { return h.problem->InitialDesign(); })
       .def_property(
           "placement",
-          [](const ProblemHandle& h) { return PlacementName(h.problem->options().placement); },
+          [](const ProblemHandle& h) {
+            return DesignPlacementName(h.problem->options().placement);
+          },
           [](ProblemHandle& h, const std::string& name) {
             h.problem->set_placement(ParsePlacement(name));
           })

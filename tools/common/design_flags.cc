@@ -85,13 +85,7 @@ void ApplyDesignFlags(Scenario* scenario) {
     throw InputError("--pressure_smoothing", "", "must lie in [0, 1]", "use 1 (the paper) or less");
   if (FLAGS_taubin_iterations < 1)
     throw InputError("--taubin_iterations", "", "must be at least 1", "e.g. 1");
-  if (FLAGS_placement == "fresh") {
-    design.placement = DesignPlacement::kFresh;
-  } else if (FLAGS_placement == "followed") {
-    design.placement = DesignPlacement::kFollowed;
-  } else if (FLAGS_placement == "anchored") {
-    design.placement = DesignPlacement::kAnchored;
-  } else {
+  if (!ParseDesignPlacement(FLAGS_placement, &design.placement)) {
     throw InputError("--placement", "", "'" + FLAGS_placement + "' is unknown",
                      "use fresh, anchored or followed");
   }

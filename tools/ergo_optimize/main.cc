@@ -101,18 +101,6 @@ void ValidateRunFlags() {
     throw InputError("--optimizer", "", "'" + FLAGS_optimizer + "' is unknown", error);
 }
 
-std::string PlacementName(DesignPlacement placement) {
-  switch (placement) {
-    case DesignPlacement::kFresh:
-      return "fresh";
-    case DesignPlacement::kFollowed:
-      return "followed";
-    case DesignPlacement::kAnchored:
-      return "anchored";
-  }
-  return "?";
-}
-
 // The designed region smoothed by Taubin steps (non-designed vertices fixed), as the design
 // closest to it (exact for positions; the normal kinds keep the normal part of the smoothing).
 Eigen::VectorXd PostSmooth(const DesignProblem& problem, const Eigen::VectorXd& x, int iterations) {
@@ -178,7 +166,7 @@ int Run() {
   RunSummary summary;
   summary.scenario = &scenario;
   summary.optimizer = FLAGS_optimizer;
-  summary.placement = PlacementName(scenario.design.placement);
+  summary.placement = DesignPlacementName(scenario.design.placement);
   summary.robust_placements = RobustPlacementsFlag();
   summary.gamma = gamma;
   DesignEvaluation initial_evaluation = first;
