@@ -1,0 +1,111 @@
+// ergo_sweep end to end on the bump scene: a 2 × 2 sweep, its reports, a resume that keeps
+// the finished cases, and a failing case reported without stopping the others.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/test_paths.h"
+#include "tools/common/child_process.h"
+
+namespace ergo {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int CountLines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+struct Sweep {
+  int status = -1;
+  std::string output;
+};
+
+// A bump case costs about a second: two evaluations, one placement, no checks or pictures.
+Sweep RunSweep(const fs::path& dir, const std::vector<std::string>& axes, bool plot) {
+  std::vector<std::string> command = {ERGO_BIN_DIR "/ergo_sweep", "--jobs=2",
+                                      "--out=" + dir.string(),
+                                      std::string("--plot=") + (plot ? "true" : "false")};
+  for (const std::string& axis : axes) command.push_back("--vary=" + axis);
+  for (const char* flag :
+       {"--", "--scenario=bump", "--max_evals=2", "--robust_placements=1",
+        "--placement_checks=false", "--plot=false", "--round_evals=0", "--candidates=1"})
+    command.push_back(flag);
+  ChildOptions options;
+  options.output = dir.string() + ".out";
+  const ChildProcessResult run = RunChildProcess(command, options);
+  return {run.started && run.signal == 0 ? run.exit_code : -1, Read(options.output)};
+}
+
+TEST(ToolsSweep, TwoByTwoSweepWritesItsReportsAndResumesKeepingFinishedCases) {
+  const fs::path dir = fs::path(testing::MakeScratchDir("sweep")) / "bump";
+  const std::vector<std::string> axes = {"bump_height=0.002,0.004", "exponent=2,3"};
+  const Sweep first = RunSweep(dir, axes, /*plot=*/true);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const std::string csv = Read(dir / "sweep.csv");
+  EXPECT_EQ(CountLines(csv), 5) << csv;  // header + 4 cases
+  EXPECT_EQ(csv.rfind("case,bump_height,exponent,status,initial_score", 0), 0u) << csv;
+  EXPECT_NE(csv.find("bump_height=0.004__exponent=3,0.004,3,ok,"), std::string::npos) << csv;
+  const std::string md = Read(dir / "sweep.md");
+  EXPECT_NE(md.find("4 cases, bump_height × 2, exponent × 2; 4 finished, 0 failed"),
+            std::string::npos)
+      << md;
+  if (first.output.find("no python3 with matplotlib") == std::string::npos) {
+    EXPECT_TRUE(fs::exists(dir / "sweep_bump_height.png")) << first.output;
+    EXPECT_TRUE(fs::exists(dir / "sweep_exponent.png")) << first.output;
+  }
+
+  // Half the folder gone (as if the sweep had been killed halfway): only that half runs.
+  const fs::path kept = dir / "cases" / "bump_height=0.002__exponent=2" / "summary.json";
+  const auto kept_time = fs::last_write_time(kept);
+  fs::remove_all(dir / "cases" / "bump_height=0.004__exponent=2");
+  fs::remove_all(dir / "cases" / "bump_height=0.004__exponent=3");
+  const Sweep resumed = RunSweep(dir, axes, /*plot=*/false);
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("4 cases (2 finished before, kept), 2 to run"), std::string::npos)
+      << resumed.output;
+  EXPECT_EQ(fs::last_write_time(kept), kept_time);  // not recomputed
+  EXPECT_TRUE(fs::exists(dir / "cases" / "bump_height=0.004__exponent=3" / "summary.json"));
+  EXPECT_EQ(CountLines(Read(dir / "sweep.csv")), 5);
+}
+
+TEST(ToolsSweep, AFailingCaseIsReportedAndTheOthersFinish) {
+  const fs::path dir = fs::path(testing::MakeScratchDir("sweep_fail")) / "bump";
+  // Exponent 7 is refused by ergo_optimize (2, 3 or 4): that case fails, exponent 3 runs.
+  const Sweep run = RunSweep(dir, {"exponent=7,3"}, /*plot=*/false);
+  EXPECT_EQ(run.status, 1) << run.output;
+  const std::string md = Read(dir / "sweep.md");
+  EXPECT_NE(md.find("2 cases, exponent × 2; 1 finished, 1 failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Failed cases"), std::string::npos) << md;
+  EXPECT_NE(md.find("`exponent=7`: ergo_optimize exited 2"), std::string::npos) << md;
+  EXPECT_NE(md.find("--exponent"), std::string::npos) << md;  // its own message, from the log
+  EXPECT_TRUE(fs::exists(dir / "cases" / "exponent=3" / "summary.json"));
+  EXPECT_NE(Read(dir / "sweep.csv").find("exponent=7,7,failed"), std::string::npos);
+}
+
+TEST(ToolsSweep, BadSweepFlagsExitTwoNamingTheFlag) {
+  const fs::path dir = fs::path(testing::MakeScratchDir("sweep_bad")) / "bump";
+  for (const auto& [axes, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{}, "--vary: is required"},
+           {{"out=a,b"}, "--out is set by the sweep"},
+           {{"exponent=2,3", "exponent=4"}, "exponent is varied twice"},
+           {{"exponent=1:9:0"}, "the step must be non-zero"}}) {
+    const Sweep run = RunSweep(dir, axes, false);
+    EXPECT_EQ(run.status, 2) << run.output;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << run.output;
+  }
+}
+
+}  // namespace
+}  // namespace ergo
