@@ -28,6 +28,7 @@
 #include "ergo/mesh/seconds_since.h"
 #include "solvers/design_objective.h"
 #include "solvers/fresh_rounds.h"
+#include "solvers/geometric_baselines.h"
 #include "solvers/history_csv.h"
 #include "solvers/optimizer.h"
 #include "solvers/robust_design_objective.h"
@@ -45,6 +46,18 @@
 DEFINE_string(
     optimizer, "nlopt-lbfgs",
     "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, nlopt-lbfgs");
+DEFINE_string(designer, "ergo",
+              "who designs the support: ergo (the optimiser, --optimizer) or a geometric "
+              "baseline, sit-and-relax or pose-to-seat (solvers/geometric_baselines.h), scored "
+              "and reported the same way");
+DEFINE_double(baseline_depth, 0.05,
+              "sit-and-relax: how far the rigid skin is pushed into the flat support for its "
+              "pressure map, m");
+DEFINE_double(baseline_contact_distance, 0,
+              "pose-to-seat: skin within this distance of the support is the contact set, m; 0 "
+              "= every downward-facing skin vertex");
+DEFINE_double(baseline_smoothness, 1,
+              "both baselines: weight of the support's smoothness against the fit to the body");
 DEFINE_int32(max_evals, 40,
              "budget: φ evaluations (each an equilibrium per placement of the objective), probes "
              "and fresh checks included");
@@ -99,6 +112,56 @@ void ValidateRunFlags() {
   std::string error;
   if (!MakeOptimizer(FLAGS_optimizer, OptimizerOptions(), &error))
     throw InputError("--optimizer", "", "'" + FLAGS_optimizer + "' is unknown", error);
+  if (FLAGS_designer != "ergo" && FLAGS_designer != "sit-and-relax" &&
+      FLAGS_designer != "pose-to-seat")
+    throw InputError("--designer", "", "'" + FLAGS_designer + "' is unknown",
+                     "use ergo, sit-and-relax or pose-to-seat");
+  RequireInRange("baseline_depth", FLAGS_baseline_depth, 1e-4, 0.5, "metres, e.g. 0.05");
+  RequireInRange("baseline_contact_distance", FLAGS_baseline_contact_distance, 0, 0.5,
+                 "metres; 0 = every downward-facing skin vertex");
+  RequireInRange("baseline_smoothness", FLAGS_baseline_smoothness, 0, 1e6, "e.g. 1");
+}
+
+// A geometric baseline's design in place of the optimiser's rounds: one fresh evaluation,
+// reported like a one-step run so the summary, checks and files are those of any design.
+RoundsResult BaselineRounds(const DesignProblem& problem, const BodyState& start,
+                            const RoundsProblem& rounds_problem, const Eigen::VectorXd& x0,
+                            double phi0) {
+  BaselineOptions options;
+  options.negative_image_depth = FLAGS_baseline_depth;
+  options.contact_distance = FLAGS_baseline_contact_distance;
+  options.fit.smoothness = FLAGS_baseline_smoothness;
+  const auto begin = std::chrono::steady_clock::now();
+  const BaselineDesign design = FLAGS_designer == "sit-and-relax"
+                                    ? SitAndRelaxDesign(problem, start, options)
+                                    : PoseToSeatDesign(problem, start, options);
+  std::cout << design.Describe() << "\n";
+  RoundsResult rounds;
+  rounds.rounds = 1;
+  rounds.kept_x = design.x;
+  rounds.kept_fresh_phi = rounds_problem.fresh_score(design.x);
+  rounds.kept_followed_phi = std::numeric_limits<double>::quiet_NaN();
+  OptimizerResult& result = rounds.result;
+  result.optimizer = FLAGS_designer;
+  result.ok = std::isfinite(rounds.kept_fresh_phi);
+  result.best_x = design.x;
+  result.initial_phi = phi0;
+  result.best_phi = rounds.kept_fresh_phi;
+  result.evaluations = 1;
+  result.seconds = SecondsSince(begin);
+  result.stop_reason = "baseline: " + design.Describe();
+  IterationRecord start_record, final_record;
+  start_record.phi = phi0;
+  final_record.iteration = 1;
+  final_record.evaluations = 1;
+  final_record.seconds = result.seconds;
+  final_record.phi = rounds.kept_fresh_phi;
+  result.history = {start_record, final_record};
+  if (!result.ok) {  // the body found no equilibrium on it: keep the initial design
+    rounds.kept_x = x0;
+    rounds.kept_fresh_phi = phi0;
+  }
+  return rounds;
 }
 
 // The designed region smoothed by Taubin steps (non-designed vertices fixed), as the design
@@ -165,7 +228,7 @@ int Run() {
   fresh.set_gamma(gamma);
   RunSummary summary;
   summary.scenario = &scenario;
-  summary.optimizer = FLAGS_optimizer;
+  summary.optimizer = FLAGS_designer == "ergo" ? FLAGS_optimizer : FLAGS_designer;
   summary.placement = DesignPlacementName(scenario.design.placement);
   summary.robust_placements = RobustPlacementsFlag();
   summary.gamma = gamma;
@@ -249,14 +312,16 @@ int Run() {
               << " of the start)\n";
   }
   const RoundsResult rounds =
-      MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective, budget, control,
-                       rounds_options, FLAGS_resume.empty() ? nullptr : &resumed);
+      FLAGS_designer != "ergo"
+          ? BaselineRounds(problem, scenario.start, rounds_problem, x0, phi0_objective)
+          : MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective, budget, control,
+                             rounds_options, FLAGS_resume.empty() ? nullptr : &resumed);
   summary.result = rounds.result;
   summary.interrupted = StopOnSignals::stopped();
   summary.candidate_phi = rounds.candidate_phi;
   summary.candidate_fresh_phi = rounds.candidate_fresh_phi;
   summary.kept_candidate = rounds.kept_candidate;
-  std::cout << FLAGS_optimizer << ": " << rounds.rounds << " round(s), "
+  std::cout << summary.optimizer << ": " << rounds.rounds << " round(s), "
             << rounds.result.evaluations << " evaluations, " << rounds.result.newton_iterations
             << " Newton iterations; kept design placed afresh: "
             << rounds.kept_fresh_phi / phi0_objective << " of the start ("
