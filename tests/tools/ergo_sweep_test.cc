@@ -38,10 +38,12 @@ Sweep RunSweep(const fs::path& dir, const std::vector<std::string>& axes, bool p
                                       "--out=" + dir.string(),
                                       std::string("--plot=") + (plot ? "true" : "false")};
   for (const std::string& axis : axes) command.push_back("--vary=" + axis);
+  // One evaluation per case under the sanitizers (each then costs about ten times as much).
   for (const char* flag :
-       {"--", "--scenario=bump", "--max_evals=2", "--robust_placements=1",
-        "--placement_checks=false", "--plot=false", "--round_evals=0", "--candidates=1"})
+       {"--", "--scenario=bump", "--robust_placements=1", "--placement_checks=false",
+        "--plot=false", "--round_evals=0", "--candidates=1"})
     command.push_back(flag);
+  command.push_back(testing::SanitizedBuild() ? "--max_evals=1" : "--max_evals=2");
   ChildOptions options;
   options.output = dir.string() + ".out";
   const ChildProcessResult run = RunChildProcess(command, options);
