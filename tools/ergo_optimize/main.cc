@@ -125,8 +125,7 @@ void ValidateRunFlags() {
 // A geometric baseline's design in place of the optimiser's rounds: one fresh evaluation,
 // reported like a one-step run so the summary, checks and files are those of any design.
 RoundsResult BaselineRounds(const DesignProblem& problem, const BodyState& start,
-                            const RoundsProblem& rounds_problem, const Eigen::VectorXd& x0,
-                            double phi0) {
+                            const RoundsProblem& rounds_problem, double phi0) {
   BaselineOptions options;
   options.negative_image_depth = FLAGS_baseline_depth;
   options.contact_distance = FLAGS_baseline_contact_distance;
@@ -157,10 +156,11 @@ RoundsResult BaselineRounds(const DesignProblem& problem, const BodyState& start
   final_record.seconds = result.seconds;
   final_record.phi = rounds.kept_fresh_phi;
   result.history = {start_record, final_record};
-  if (!result.ok) {  // the body found no equilibrium on it: keep the initial design
-    rounds.kept_x = x0;
-    rounds.kept_fresh_phi = phi0;
-  }
+  // The baseline's design is kept whatever it scores: a placement that finds no equilibrium
+  // on it is reported as such (the summary's checks), not replaced by the initial design.
+  if (!result.ok)
+    std::cout << "the objective's placements did not all reach equilibrium on the "
+              << FLAGS_designer << " design\n";
   return rounds;
 }
 
@@ -313,7 +313,7 @@ int Run() {
   }
   const RoundsResult rounds =
       FLAGS_designer != "ergo"
-          ? BaselineRounds(problem, scenario.start, rounds_problem, x0, phi0_objective)
+          ? BaselineRounds(problem, scenario.start, rounds_problem, phi0_objective)
           : MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective, budget, control,
                              rounds_options, FLAGS_resume.empty() ? nullptr : &resumed);
   summary.result = rounds.result;
