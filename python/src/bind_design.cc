@@ -78,7 +78,7 @@ py::dict EvaluationDict(const DesignEvaluation& e, bool with_gradient) {
   d["support_pressure"] = e.pressures.support.pressure;
   d["peak_pressure"] =
       e.pressures.human.pressure.size() ? e.pressures.human.pressure.maxCoeff() : 0.0;
-  d["seconds"] = e.seconds;
+  d["seconds"] = e.timing.total_seconds;
   return d;
 }
 
