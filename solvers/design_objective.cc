@@ -14,7 +14,8 @@ ObjectiveValue DesignObjective::Evaluate(const Eigen::VectorXd& x, bool with_gra
   out.ok = last_.ok;
   out.message = last_.message;
   out.newton_iterations = last_.equilibrium.iterations;
-  out.seconds = last_.seconds;
+  out.seconds = last_.timing.total_seconds;
+  out.timing = last_.timing;
   if (!last_.ok) return out;
   out.phi = last_.phi;
   out.zeta = last_.zeta;

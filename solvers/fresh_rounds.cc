@@ -60,6 +60,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     if (budget.max_seconds > 0) round.max_seconds = std::max(1e-3, budget.max_seconds - seconds());
     RunControl round_control = control;
     const long used_before = state.evaluations, newton_before = state.newton_iterations;
+    const EvaluationTiming timing_before = state.timing;
     const int iteration_before = state.next_iteration;
     const double round_start = seconds();
     round_control.progress = [&](const IterationRecord& record) {
@@ -68,6 +69,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
       shifted.evaluations += used_before;
       shifted.newton_iterations += newton_before;
       shifted.seconds += round_start;
+      shifted.timing += timing_before;
       state.history.push_back(shifted);
       return control.progress ? control.progress(shifted) : true;
     };
@@ -77,6 +79,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     state.evaluations += r.evaluations;
     state.newton_iterations += r.newton_iterations;
     state.failed_evaluations += r.failed_evaluations;
+    state.timing += r.timing;
     if (!r.history.empty())
       state.next_iteration = iteration_before + r.history.back().iteration + 1;
     const bool interrupted = r.stop_reason.find("interrupt") != std::string::npos;
@@ -92,7 +95,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     for (size_t c = 0; c < r.candidates.size() && static_cast<int>(phi.size()) < checks; ++c) {
       if (control.stop && control.stop->load()) break;
       if (r.candidates[c] == state.kept_x) continue;  // the round's start
-      const double value = problem.fresh_score(r.candidates[c]);
+      const double value = problem.fresh_score(r.candidates[c], &state.timing);
       ++state.evaluations;
       phi.push_back(r.candidate_phi[c]);
       fresh.push_back(value);
@@ -151,6 +154,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
   total.evaluations = state.evaluations;
   total.failed_evaluations = state.failed_evaluations;
   total.newton_iterations = state.newton_iterations;
+  total.timing = state.timing;
   total.seconds = state.seconds;
   out.kept_x = state.kept_x;
   out.kept_fresh_phi = state.kept_fresh_phi;

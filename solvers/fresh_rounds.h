@@ -36,6 +36,7 @@ struct RoundsState {
   long evaluations = 0;          // spent, fresh checks included
   long newton_iterations = 0;
   long failed_evaluations = 0;
+  EvaluationTiming timing;  // of those evaluations, fresh checks included
   int rounds = 0;
   int next_iteration = 0;  // the history's next iteration number
   double seconds = 0;      // wall time spent
@@ -59,12 +60,14 @@ struct RoundsProblem {
   // An objective whose evaluations follow their own path from the body placed afresh at the
   // first design evaluated.
   std::function<std::unique_ptr<Objective>()> make_objective;
-  // φ of x with the body placed afresh (the score kept); NaN if the equilibrium fails.
-  std::function<double(const Eigen::VectorXd& x)> fresh_score;
+  // φ of x with the body placed afresh (the score kept); NaN if the equilibrium fails. Adds
+  // the evaluation's time split to *timing.
+  std::function<double(const Eigen::VectorXd& x, EvaluationTiming* timing)> fresh_score;
 };
 
 struct RoundsResult {
-  OptimizerResult result;  // all rounds together: counts (fresh checks included), history
+  OptimizerResult result;  // all rounds together: counts and time split (fresh checks
+                           // included), history
   Eigen::VectorXd kept_x;  // the design with the best fresh score (x₀ if none beat it)
   double kept_fresh_phi = 0;
   double kept_followed_phi = 0;  // the optimiser's own value there (its path), or φ₀

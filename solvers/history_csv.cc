@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <ostream>
+#include <string>
 
 #include "ergo/mesh/atomic_file.h"
 
@@ -19,7 +20,14 @@ std::string CsvField(const std::string& text) {
 
 void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
   WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step\n";
+    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step";
+    // The time split's columns; its newton_iterations is the column above already.
+    ForEachTimingEntry(
+        EvaluationTiming(), [&](const char* name, double) { out << ',' << name; },
+        [&](const char* name, long) {
+          if (std::string(name) != "newton_iterations") out << ',' << name;
+        });
+    out << '\n';
     for (const IterationRecord& r : result.history) {
       out << r.iteration << ',' << r.evaluations << ',' << r.newton_iterations << ',';
       WriteDouble(out, r.seconds);
@@ -31,6 +39,15 @@ void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
       if (r.gradient_norm >= 0) WriteDouble(out, r.gradient_norm);
       out << ',';
       WriteDouble(out, r.step);
+      ForEachTimingEntry(
+          r.timing,
+          [&](const char*, double seconds) {
+            out << ',';
+            WriteDouble(out, seconds);
+          },
+          [&](const char* name, long count) {
+            if (std::string(name) != "newton_iterations") out << ',' << count;
+          });
       out << '\n';
     }
   });

@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include "ergo/design/evaluation_timing.h"
+
 namespace ergo {
 
 // One evaluation. A failed one (ok = false) carries a message and never a number.
@@ -21,6 +23,9 @@ struct ObjectiveValue {
   Eigen::VectorXd gradient;           // ∇φ, when requested and ok
   int newton_iterations = 0;          // equilibrium Newton iterations spent (also when failed)
   double seconds = 0;                 // wall time of this evaluation
+  // Where the time went, summed over the equilibria the evaluation solved (also when it
+  // failed); all zeros for objectives that are not design problems (analytic ones).
+  EvaluationTiming timing;
 };
 
 class Objective {

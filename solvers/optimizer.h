@@ -49,6 +49,9 @@ struct IterationRecord {
   double phi = 0, zeta = 0, psi = 0;  // as evaluated at the iterate (never interpolated)
   double gradient_norm = -1;  // ‖∇φ‖₂ at the iterate; −1 where it was not evaluated
   double step = 0;            // largest vertex move from the previous iterate, m
+  // The time split of every evaluation so far (cumulative like `evaluations`; zeros for
+  // objectives that are not design problems).
+  EvaluationTiming timing;
 };
 
 // How a caller watches and stops a run. Everything is optional.
@@ -87,6 +90,9 @@ struct OptimizerResult {
   long failed_evaluations = 0;  // evaluations whose equilibrium (or value) failed
   long newton_iterations = 0;
   double seconds = 0;  // wall
+  // The time split summed over every evaluation made (the same ones as `evaluations`); its
+  // seconds are per evaluation, so parallel probes and placements sum beyond `seconds`.
+  EvaluationTiming timing;
 
   double ReductionPercent() const;  // 100 (1 − best/initial)
   std::string BriefReport() const;  // one line

@@ -26,6 +26,8 @@ class RobustDesignObjective : public Objective {
 
   int NumParameters() const override { return problems_.front()->NumParameters(); }
   // Mean φ, ζ, ψ and ∇φ over the placements; fails (naming the placement) if any fails.
+  // `seconds` is the wall time (the slowest placement), `timing` the sum of the placements'
+  // splits (so its seconds exceed the wall time when they ran in parallel).
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override;
   std::unique_ptr<Objective> Clone() const override;
   double LargestMove(const Eigen::VectorXd& dx) const override;

@@ -96,6 +96,7 @@ bool RunMonitor::Evaluate(Objective& objective, const Eigen::VectorXd& x, bool w
   std::lock_guard<std::mutex> lock(mutex_);
   ++completed_;
   newton_iterations_ += v.newton_iterations;
+  timing_ += v.timing;
   if (!v.ok) ++failed_;
   if (v.ok) {
     Logged entry{x, v.phi, v.zeta, v.psi,
@@ -155,6 +156,7 @@ void RunMonitor::AddIteration(IterationRecord record) {
     std::lock_guard<std::mutex> lock(mutex_);
     record.evaluations = completed_;
     record.newton_iterations = newton_iterations_;
+    record.timing = timing_;
   }
   record.seconds = Seconds();
   history_.push_back(record);
@@ -219,6 +221,7 @@ OptimizerResult RunMonitor::Finish(const std::string& optimizer_reason) const {
   result.evaluations = completed_;
   result.failed_evaluations = failed_;
   result.newton_iterations = newton_iterations_;
+  result.timing = timing_;
   return result;
 }
 

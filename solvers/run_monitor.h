@@ -1,6 +1,6 @@
 // RunMonitor: the single gate every evaluation of one optimiser run passes through. It
 // enforces the Budget and the stop flag, counts every φ evaluation (probes and failures
-// included) and its Newton iterations, keeps the best design that was evaluated
+// included), its Newton iterations and its time split, keeps the best design that was evaluated
 // successfully, and builds the history — so that what a run reports is what was evaluated,
 // whatever the optimiser believes internally. Thread-safe: parallel probes share one.
 #pragma once
@@ -40,8 +40,8 @@ class RunMonitor {
   // Stops with `reason` unless a reason is already set.
   void RequestStop(const std::string& reason);
 
-  // Appends a history entry, filling in evaluations, Newton iterations and seconds so far,
-  // and calls the progress callback (which may stop the run: "interrupted").
+  // Appends a history entry, filling in evaluations, Newton iterations, seconds and the time
+  // split so far, and calls the progress callback (which may stop the run: "interrupted").
   void AddIteration(IterationRecord record);
   const std::vector<IterationRecord>& history() const { return history_; }
 
@@ -79,6 +79,7 @@ class RunMonitor {
   long completed_ = 0;  // evaluations finished (the count reported)
   long failed_ = 0;
   long newton_iterations_ = 0;
+  EvaluationTiming timing_;  // of the completed evaluations
   std::string stop_reason_;
   bool has_best_ = false;
   Logged best_;

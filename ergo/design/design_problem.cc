@@ -138,33 +138,41 @@ void DesignProblem::Remember(const Eigen::VectorXd& x, const BodyState& state) {
 DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gradient) {
   const Clock::time_point begin = Clock::now();
   DesignEvaluation out;
+  EvaluationTiming& timing = out.timing;
   CHECK_EQ(x.size(), NumParameters());
+  auto finish = [&] {
+    timing.total_seconds = SecondsSince(begin);
+    counters_->nanoseconds += static_cast<long>(1e9 * timing.total_seconds);
+  };
   auto fail = [&](const std::string& message) {
     out.ok = false;
     out.message = message;
     ++counters_->failures;
-    out.seconds = SecondsSince(begin);
-    counters_->nanoseconds += static_cast<long>(1e9 * out.seconds);
+    finish();
     return out;
   };
   ++counters_->evaluations;
   if (!x.allFinite()) return fail("the design vector has non-finite entries");
 
   // Equilibrium on the support at x (Eq. 7–9).
+  Clock::time_point mark = Clock::now();
   const Vertices support_positions = parameterization_.Positions(x);
   support_.UpdateVertices(support_positions);
+  timing.support_seconds = SecondsSince(mark);
   // The start of the solve: placed afresh, warm from the nearest design, or one hop from the
   // nearest fresh anchor.
-  bool new_anchor = false;
+  mark = Clock::now();
+  bool new_anchor = false, fresh = false, predict = false;
   BodyState solve_start;
   if (options_.placement == DesignPlacement::kFollowed) {
     // A path starts with the body placed afresh.
     bool from_last = false;
-    solve_start = cache_.empty() ? FreshStart() : WarmStart(x, &from_last);
-    if (from_last && last_solve_ok_ && options_.tangent_predictor && solver_.last_hessian_exact() &&
-        solver_.factor().factorized())
-      solve_start = TangentPrediction(x);
+    fresh = cache_.empty();
+    solve_start = fresh ? FreshStart() : WarmStart(x, &from_last);
+    predict = from_last && last_solve_ok_ && options_.tangent_predictor &&
+              solver_.last_hessian_exact() && solver_.factor().factorized();
   } else if (options_.placement == DesignPlacement::kFresh) {
+    fresh = true;
     solve_start = FreshStart();
   } else {
     const std::pair<Eigen::VectorXd, BodyState>* nearest = nullptr;
@@ -176,15 +184,32 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
         nearest = &anchor;
       }
     }
-    new_anchor = nearest == nullptr || distance > options_.anchor_move;
+    new_anchor = fresh = nearest == nullptr || distance > options_.anchor_move;
     solve_start = new_anchor ? FreshStart() : nearest->second;
   }
+  timing.placement_seconds = SecondsSince(mark);
+  timing.fresh_placements = fresh ? 1 : 0;
+  if (predict) {
+    mark = Clock::now();
+    solve_start = TangentPrediction(x);
+    timing.predictor_seconds = SecondsSince(mark);
+  }
   out.equilibrium = solver_.Solve(support_, solve_start);
-  last_solve_ok_ = out.equilibrium.converged;
-  counters_->newton_iterations += out.equilibrium.iterations;
-  if (!out.equilibrium.converged)
-    return fail("equilibrium failed: " + out.equilibrium.BriefReport());
-  const BodyState& state = out.equilibrium.state;
+  const EquilibriumResult& solved = out.equilibrium;
+  timing.equilibria = 1;
+  timing.newton_iterations = solved.iterations;
+  timing.factorizations = solved.factorizations;
+  timing.pcg_iterations = solved.pcg_iterations;
+  timing.line_search_trials = solved.line_search_trials;
+  timing.contact_seconds = solved.contact_seconds;
+  timing.assembly_seconds = solved.assembly_seconds;
+  timing.factorization_seconds = solved.factorization_seconds;
+  timing.solve_seconds = solved.solve_seconds;
+  timing.line_search_seconds = solved.line_search_seconds;
+  last_solve_ok_ = solved.converged;
+  counters_->newton_iterations += solved.iterations;
+  if (!solved.converged) return fail("equilibrium failed: " + solved.BriefReport());
+  const BodyState& state = solved.state;
   Remember(x, state);
   last_x_ = x;
   if (new_anchor) {
@@ -200,24 +225,30 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   // exact K̂, the Hessian the adjoint needs): reuse it rather than assemble twice.
   TotalPotential::Evaluation computed;
   const bool reuse = !with_gradient || solver_.last_hessian_exact();
-  if (!reuse)
+  if (!reuse) {
+    mark = Clock::now();
     potential.Evaluate(state, support_, HessianKind::kExact, true, &solver_.hints(), &computed);
+    timing.adjoint_seconds += SecondsSince(mark);
+  }
   const TotalPotential::Evaluation& e = reuse ? solver_.last_evaluation() : computed;
 
   // Pressures of both surfaces from the springs the equilibrium used (Eq. 11–12, Fig. 4).
+  mark = Clock::now();
   out.pressures = pressures_.Evaluate(e.contacts, support_.vertex_areas());
-  const TriMesh support_mesh{support_positions, initial_support_.triangles};
-  const SmoothnessValue psi =
-      EvaluateSmoothness(support_positions, support_laplacian_, options_.taubin);
   out.zeta_human = out.pressures.human.cost;
   out.zeta_support = out.pressures.support.cost;
   out.zeta = out.zeta_human + out.zeta_support;
+  timing.pressure_seconds = SecondsSince(mark);
+  mark = Clock::now();
+  const SmoothnessValue psi =
+      EvaluateSmoothness(support_positions, support_laplacian_, options_.taubin);
   out.psi = psi.value;
+  timing.psi_seconds = SecondsSince(mark);
   out.phi = out.zeta + options_.gamma * out.psi;
   if (!std::isfinite(out.phi)) return fail("the objective is not finite");
 
   if (with_gradient) {
-    const Clock::time_point adjoint_begin = Clock::now();
+    mark = Clock::now();
     ScorePartials partials = PressureScorePartials(out.pressures, body_);
     // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
     const Eigen::VectorXd rhs =
@@ -230,11 +261,14 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       if (newton_factor.factorized()) {
         const PcgResult cg =
             PreconditionedConjugateGradient(e.body.hessian, newton_factor, rhs, 1e-12, 30);
+        timing.adjoint_pcg_iterations += cg.iterations;
         if (cg.converged) z = cg.x;
       }
       if (z.size() == 0) {
         const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.body.hessian);
+        ++timing.adjoint_factorizations;
         if (!factor.ok) {
+          timing.adjoint_seconds += SecondsSince(mark);
           return fail("the exact Hessian at the equilibrium is not positive definite (" +
                       factor.message +
                       "): the equilibrium is not a strict minimum, so dy/dx is undefined");
@@ -248,18 +282,20 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       partials.support.position -= contraction.position;
       partials.support.area -= contraction.area;
     }
+    const TriMesh support_mesh{support_positions, initial_support_.triangles};
     const Vertices d_support =
         partials.support.position + ChainSupportAreas(partials.support.area, support_mesh);
     out.zeta_gradient = parameterization_.PullBack(d_support);
+    timing.adjoint_seconds += SecondsSince(mark);
+    mark = Clock::now();
     out.psi_gradient = parameterization_.PullBack(psi.gradient);
+    timing.psi_seconds += SecondsSince(mark);
     out.gradient = out.zeta_gradient + options_.gamma * out.psi_gradient;
     ++counters_->gradients;
-    out.adjoint_seconds = SecondsSince(adjoint_begin);
   }
   out.ok = true;
   out.message = "ok";
-  out.seconds = SecondsSince(begin);
-  counters_->nanoseconds += static_cast<long>(1e9 * out.seconds);
+  finish();
   return out;
 }
 

@@ -24,6 +24,7 @@
 #include "ergo/body/layered_body.h"
 #include "ergo/contact/support.h"
 #include "ergo/design/contact_pressures.h"
+#include "ergo/design/evaluation_timing.h"
 #include "ergo/design/support_parameterization.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/ergonomics/pressure_cost.h"
@@ -85,8 +86,9 @@ struct DesignEvaluation {
   // The equilibrium's springs, per-vertex forces and both surfaces' pressures: what the
   // reports and pictures show (nothing is rebuilt for output).
   ContactPressures pressures;
-  double seconds = 0;          // this evaluation, wall
-  double adjoint_seconds = 0;  // the gradient part
+  // Where this evaluation's time went (its total is this evaluation's wall time; the
+  // equilibrium's parts are those of `equilibrium`, gathered with the rest).
+  EvaluationTiming timing;
 };
 
 // Evaluation counts shared by a problem and all its copies.

@@ -98,6 +98,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   seconds["assembly"] = result.assembly_seconds;
   seconds["contact"] = result.contact_seconds;
   seconds["factorization"] = result.factorization_seconds;
+  seconds["solve"] = result.solve_seconds;
   seconds["line_search"] = result.line_search_seconds;
   seconds["total"] = result.total_seconds;
   json["seconds"] = seconds;

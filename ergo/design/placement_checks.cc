@@ -90,8 +90,11 @@ DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& place
 }
 
 double MeanPlacedPhi(const DesignProblem& problem, const Eigen::VectorXd& x,
-                     const std::vector<Placement>& placements, const std::atomic<bool>* stop) {
+                     const std::vector<Placement>& placements, const std::atomic<bool>* stop,
+                     EvaluationTiming* timing) {
   const std::vector<DesignEvaluation> placed = EvaluatePlacements(problem, x, placements, stop);
+  if (timing)
+    for (const DesignEvaluation& e : placed) *timing += e.timing;
   double mean = 0;
   for (const DesignEvaluation& e : placed) {
     if (!e.ok) return std::numeric_limits<double>::quiet_NaN();

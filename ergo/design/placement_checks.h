@@ -41,10 +41,10 @@ std::vector<DesignEvaluation> EvaluatePlacements(const DesignProblem& problem,
                                                  const std::atomic<bool>* stop = nullptr);
 
 // The mean φ of x over those placements (the robust objective's value placed afresh); NaN if
-// any of their equilibria fails.
+// any of their equilibria fails. Adds their time splits to *timing when given.
 double MeanPlacedPhi(const DesignProblem& problem, const Eigen::VectorXd& x,
                      const std::vector<Placement>& placements,
-                     const std::atomic<bool>* stop = nullptr);
+                     const std::atomic<bool>* stop = nullptr, EvaluationTiming* timing = nullptr);
 
 // Runs task(i) for i in [0, count) on min(count, cores) threads, sharing the cores among
 // them (each thread's OpenMP regions get cores / threads).

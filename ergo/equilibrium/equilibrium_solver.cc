@@ -61,10 +61,10 @@ std::string EquilibriumResult::FullReport() const {
   out << BriefReport() << "\n"
       << "  energy " << energy << " J, contact force (" << contact_force.transpose() << ") N\n"
       << "  linear algebra: " << factorizations << " factorisations, " << pcg_iterations
-      << " PCG iterations on reused factors\n"
+      << " PCG iterations on reused factors, " << line_search_trials << " line-search trials\n"
       << "  time: assembly " << assembly_seconds << " s, contact " << contact_seconds
-      << " s, factorisation+solves " << factorization_seconds << " s, line search "
-      << line_search_seconds << " s, total " << total_seconds << " s";
+      << " s, factorisation " << factorization_seconds << " s, solves " << solve_seconds
+      << " s, line search " << line_search_seconds << " s, total " << total_seconds << " s";
   return out.str();
 }
 
@@ -83,11 +83,12 @@ EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumO
 
 FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& state,
                                                              const Vertices& positions,
-                                                             bool free_fall,
-                                                             SparseMatrix* hessian) {
+                                                             bool free_fall, SparseMatrix* hessian,
+                                                             int* factorizations) {
   const ReducedSystem& system = potential_.system();
   if (free_fall) system.AddScaledMass(options_.free_fall_mass_scale, state, positions, hessian);
   FactorizationStatus factor = cholesky_.Factorize(*hessian);
+  ++*factorizations;
   if (factor.ok) return factor;
   // Singular (e.g. a rotation not yet resisted): regularise with a growing multiple of M.
   SparseMatrix mass = system.pattern();
@@ -97,6 +98,7 @@ FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& st
     SparseMatrix shifted = *hessian;
     system.AddScaledMass(shift, state, positions, &shifted);
     factor = cholesky_.Factorize(shifted);
+    ++*factorizations;
   }
   return factor;
 }
@@ -207,7 +209,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     // the matrix changed little), then a new factorisation: the exact K̂ if positive
     // definite, else the PSD projection.
     Eigen::VectorXd step;
-    const Clock::time_point start_linear = Clock::now();
+    Clock::time_point mark = Clock::now();
     if (options_.reuse_factorization && cholesky_.factorized() &&
         first_kind == HessianKind::kExact) {
       SparseMatrix with_mass;
@@ -223,8 +225,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                                                            options_.max_pcg_iterations);
       result.pcg_iterations += cg.iterations;
       if (cg.converged) step = cg.x;
+      result.solve_seconds += SecondsSince(mark);
     }
     if (step.size() == 0) {
+      mark = Clock::now();
       bool exact_ok = false;
       if (first_kind == HessianKind::kExact) {
         SparseMatrix exact = e.body.hessian;
@@ -233,10 +237,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
         exact_ok = cholesky_.Factorize(exact).ok;
         ++result.factorizations;
       }
+      result.factorization_seconds += SecondsSince(mark);
       if (!exact_ok) {
         if (first_kind == HessianKind::kExact) {
           ++result.projected_steps;
-          result.factorization_seconds += SecondsSince(start_linear);
           TotalPotential::Evaluation projected;
           potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_,
                               &projected);
@@ -245,23 +249,18 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
           e.body.hessian.swap(projected.body.hessian);
           last_exact_ = false;
         }
-        const Clock::time_point start_projected = Clock::now();
-        const FactorizationStatus factor =
-            FactorizeNewtonMatrix(state, e.positions, !in_contact, &e.body.hessian);
-        ++result.factorizations;
-        result.factorization_seconds += SecondsSince(start_projected);
+        mark = Clock::now();
+        const FactorizationStatus factor = FactorizeNewtonMatrix(
+            state, e.positions, !in_contact, &e.body.hessian, &result.factorizations);
+        result.factorization_seconds += SecondsSince(mark);
         if (!factor.ok) {
           return finish(EquilibriumStatus::kNonFinite,
                         "the Newton matrix could not be factorised: " + factor.message);
         }
-      } else {
-        result.factorization_seconds += SecondsSince(start_linear);
       }
-      const Clock::time_point start_solve = Clock::now();
+      mark = Clock::now();
       step = -cholesky_.Solve(e.gradient);
-      result.factorization_seconds += SecondsSince(start_solve);
-    } else {
-      result.factorization_seconds += SecondsSince(start_linear);
+      result.solve_seconds += SecondsSince(mark);
     }
     // Shorten steps that would move a vertex farther than the cap (nearly free modes).
     const double cap = options_.max_step_fraction * body_size_;
@@ -273,6 +272,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       // In free fall no step may carry the skin past the support (a thin support would be
       // jumped): the largest vertex move is capped at the skin's clearance (sphere tracing),
       // plus a thousandth of the body's size to land in contact.
+      const Clock::time_point start_clearance = Clock::now();
       double clearance = std::numeric_limits<double>::infinity();
       for (Eigen::Index l = 0; l < body_.skin().vertices.size(); ++l)
         clearance = std::min(clearance,
@@ -285,6 +285,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                               .norm()
                               .maxCoeff();
       clearance += 1e-3 * body_size_;
+      result.contact_seconds += SecondsSince(start_clearance);
       if (move > 0 && std::isfinite(clearance)) {
         if (move > clearance) {
           step *= clearance / move;  // land on the support, no farther
@@ -314,6 +315,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     search.noise = 1e-12 * (std::abs(energy0) + energy_scale);
     const GoldenSectionResult found = GoldenSectionSearch(phi, slope, search);
     result.line_search_seconds += SecondsSince(start_search);
+    result.line_search_trials += found.evaluations;
     if (found.step == 0) {
       return finish(EquilibriumStatus::kLineSearchFailure,
                     "no step length along the Newton direction lowered the energy (residual " +

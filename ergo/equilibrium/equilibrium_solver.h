@@ -80,20 +80,24 @@ struct EquilibriumResult {
   BodyState state;
   bool converged = false;
   EquilibriumStatus status = EquilibriumStatus::kIterationCap;
-  std::string message;      // why it stopped, in words
-  int iterations = 0;       // Newton iterations
-  int projected_steps = 0;  // iterations that fell back to the PSD-projected K̂
-  int factorizations = 0;   // numeric Cholesky factorisations
-  int pcg_iterations = 0;   // conjugate-gradient iterations on reused factors
-  double residual = 0;      // final ResidualNorm, N
+  std::string message;         // why it stopped, in words
+  int iterations = 0;          // Newton iterations
+  int projected_steps = 0;     // iterations that fell back to the PSD-projected K̂
+  int factorizations = 0;      // numeric Cholesky factorisations (regularised retries included)
+  int pcg_iterations = 0;      // conjugate-gradient iterations on reused factors
+  int line_search_trials = 0;  // energy evaluations of the line searches
+  double residual = 0;         // final ResidualNorm, N
   double relative_residual = 0;
   double energy = 0;           // J
   int contact_vertices = 0;    // skin vertices inside the support
   int contact_springs = 0;     // springs that push (both kinds when two-way)
   double max_penetration = 0;  // m
   Eigen::Vector3d contact_force = Eigen::Vector3d::Zero();  // Σ contact forces on the body, N
-  // Seconds spent, by part.
-  double assembly_seconds = 0, contact_seconds = 0, factorization_seconds = 0,
+  // Seconds spent, by part (disjoint intervals inside total_seconds): assembly of the elastic
+  // terms and reduction; contact detection and springs at the iterates (and the free-fall
+  // clearance queries); numeric factorisations; solves (PCG on reused factors, triangular
+  // solves); the line search's trials (energy with contact detection at each).
+  double assembly_seconds = 0, contact_seconds = 0, factorization_seconds = 0, solve_seconds = 0,
          line_search_seconds = 0, total_seconds = 0;
 
   std::string BriefReport() const;  // one line
@@ -130,9 +134,11 @@ class EquilibriumSolver {
   std::string UnconstrainedTranslations(const TotalPotential::Evaluation& evaluation) const;
   bool FellPastSupport(const Vertices& positions, const Support& support) const;
   // Factorises `hessian` (+ α M in free fall), regularising with growing multiples of M if
-  // it is singular; returns the status of the last attempt.
+  // it is singular; returns the status of the last attempt and adds the attempts to
+  // *factorizations.
   FactorizationStatus FactorizeNewtonMatrix(const BodyState& state, const Vertices& positions,
-                                            bool free_fall, SparseMatrix* hessian);
+                                            bool free_fall, SparseMatrix* hessian,
+                                            int* factorizations);
 
   const LayeredBody& body_;
   EquilibriumOptions options_;

@@ -57,6 +57,15 @@ void RequireDesign(const DesignProblem& problem, const Eigen::VectorXd& x) {
   if (!x.allFinite()) throw InputError("x", "", "has a non-finite entry", "give finite values");
 }
 
+// The time split as evaluation_timing.h names it: seconds as floats, counts as ints.
+py::dict TimingDict(const EvaluationTiming& timing) {
+  py::dict d;
+  ForEachTimingEntry(
+      timing, [&](const char* name, double seconds) { d[name] = seconds; },
+      [&](const char* name, long count) { d[name] = count; });
+  return d;
+}
+
 py::dict EvaluationDict(const DesignEvaluation& e, bool with_gradient) {
   py::dict d;
   d["ok"] = e.ok;
@@ -78,7 +87,8 @@ py::dict EvaluationDict(const DesignEvaluation& e, bool with_gradient) {
   d["support_pressure"] = e.pressures.support.pressure;
   d["peak_pressure"] =
       e.pressures.human.pressure.size() ? e.pressures.human.pressure.maxCoeff() : 0.0;
-  d["seconds"] = e.seconds;
+  d["seconds"] = e.timing.total_seconds;
+  d["timing"] = TimingDict(e.timing);
   return d;
 }
 
@@ -93,6 +103,7 @@ py::dict RecordDict(const IterationRecord& r) {
   d["psi"] = r.psi;
   d["gradient_norm"] = r.gradient_norm;
   d["step"] = r.step;
+  d["time_split"] = TimingDict(r.timing);  // cumulative, as history.csv's columns
   return d;
 }
 
@@ -110,6 +121,7 @@ py::dict ResultDict(const OptimizerResult& r) {
   d["failed_evaluations"] = r.failed_evaluations;
   d["newton_iterations"] = r.newton_iterations;
   d["seconds"] = r.seconds;
+  d["time_split"] = TimingDict(r.timing);
   d["stop_reason"] = r.stop_reason;
   py::list history;
   for (const IterationRecord& record : r.history) history.append(RecordDict(record));
@@ -244,7 +256,10 @@ void BindDesign(py::module_& m) {
           py::arg("x"), py::arg("gradient") = true,
           "A dict: ok, message, phi, zeta, psi, zeta_skin, zeta_support, gradient (dφ/dx), "
           "zeta_gradient, psi_gradient, contact_vertices, skin_pressure, support_pressure, "
-          "peak_pressure, seconds. An equilibrium that fails is ok=False (never NaN).")
+          "peak_pressure, seconds, timing (where the seconds went: support_s, placement_s, "
+          "contact_s, assembly_s, factorization_s, solve_s, line_search_s, adjoint_s, ..., "
+          "other_s, and the counts factorizations, pcg_iterations, ...). An equilibrium that "
+          "fails is ok=False (never NaN).")
       .def(
           "support_at",
           [](const ProblemHandle& h, const Eigen::VectorXd& x) {

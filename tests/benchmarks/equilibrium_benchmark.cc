@@ -1,7 +1,7 @@
 // Static equilibrium of a soft ball (a tissue layer around a rigid core, built by the body
 // builder) resting on a flat slab: cold solves from 1 mm above, warm solves after the slab
 // rises by 0.1 mm, at about 2k, 10k and 40k body vertices, with the time split (assembly,
-// contact, factorisation, line search) and Newton iteration counts; and Newton against
+// contact, factorisation, solves, line search) and Newton iteration counts; and Newton against
 // Ceres L-BFGS to the same residual on the smallest body.
 //   build/bin/equilibrium_benchmark --benchmark_repetitions=3
 //   --benchmark_report_aggregates_only=true
@@ -59,6 +59,8 @@ void Report(benchmark::State& state, const LayeredBody& body, const EquilibriumR
   state.counters["assembly_s"] = r.assembly_seconds;
   state.counters["contact_s"] = r.contact_seconds;
   state.counters["factorization_s"] = r.factorization_seconds;
+  state.counters["solve_s"] = r.solve_seconds;
+  state.counters["factorizations"] = r.factorizations;
   state.counters["line_search_s"] = r.line_search_seconds;
   state.counters["converged"] = r.converged ? 1 : 0;
 }

@@ -52,7 +52,7 @@ void Measure(const std::string& scenario_name, const std::string& preset, bool n
             << "contact force " << q.contact_force.transpose() << " N, load "
             << scenario.body->TotalLoad().transpose() << " N\n"
             << "initial zeta " << e.zeta << " (human " << e.zeta_human << ", support "
-            << e.zeta_support << "), evaluation " << e.seconds << " s\n"
+            << e.zeta_support << "), evaluation " << e.timing.BriefReport() << "\n"
             << "| " << scenario_name << " | " << preset << " | " << start_name << " | "
             << report.body_vertices << " | " << report.support_vertices << " ("
             << report.active_vertices << ") | " << report.total_mass << " | "

@@ -36,6 +36,10 @@ def test_gradient_matches_central_differences(bump):
     g = at["gradient"]
     assert g.shape == x0.shape and np.linalg.norm(g) > 0
     assert at["phi"] == pytest.approx(at["zeta"] + problem.gamma * at["psi"], rel=1e-12)
+    timing = at["timing"]
+    assert timing["evaluation_s"] == at["seconds"] and timing["equilibria"] == 1
+    assert timing["newton_iterations"] == at["newton_iterations"]
+    assert all(v >= 0 for k, v in timing.items() if k != "other_s")
     rng = np.random.default_rng(7)
     directions = [g / np.linalg.norm(g)] + [d / np.linalg.norm(d)
                                             for d in rng.standard_normal((2, x0.size))]
@@ -80,6 +84,9 @@ def test_builtin_optimiser_result_and_history(bump):
     assert result["reduction_percent"] == pytest.approx(
         100 * (1 - result["phi"] / result["initial_phi"]))
     assert len(result["history"]) == len(seen) >= 2
+    # One equilibrium per evaluation, every evaluation in the run's time split.
+    assert result["time_split"]["equilibria"] == result["evaluations"]
+    assert result["history"][-1]["time_split"]["equilibria"] <= result["evaluations"]
     assert result["history"][0]["iteration"] == 0
     assert result["x"].shape == (bump.problem().num_parameters,)
     # A callback returning False stops the run at once.

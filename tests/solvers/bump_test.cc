@@ -86,6 +86,9 @@ TEST_P(BumpOptimizerTest, LowersPhiByAThirdWithin60EvaluationsAndReportsOnlyEval
   }
   EXPECT_EQ(result.newton_iterations, newton);
   EXPECT_EQ(result.failed_evaluations, failed);
+  // The time split covers the same evaluations: one equilibrium each.
+  EXPECT_EQ(result.timing.equilibria, result.evaluations);
+  EXPECT_EQ(result.timing.newton_iterations, newton);
 
   // Every φ reported was returned by a successful evaluation; the best is the lowest of them
   // and belongs to exactly the design returned.
@@ -102,7 +105,13 @@ TEST_P(BumpOptimizerTest, LowersPhiByAThirdWithin60EvaluationsAndReportsOnlyEval
   ASSERT_FALSE(result.history.empty());
   EXPECT_EQ(result.initial_phi, result.history.front().phi);
   long previous_evaluations = 0;
+  EvaluationTiming previous_timing;
   for (const IterationRecord& record : result.history) {
+    // Cumulative, like the evaluations.
+    EXPECT_GE(record.timing.total_seconds, previous_timing.total_seconds);
+    EXPECT_GE(record.timing.equilibria, previous_timing.equilibria);
+    EXPECT_LE(record.timing.equilibria, result.timing.equilibria);
+    previous_timing = record.timing;
     EXPECT_GT(phis.count(record.phi), 0u)
         << "iteration " << record.iteration << " reports φ = " << record.phi
         << ", which no evaluation returned";

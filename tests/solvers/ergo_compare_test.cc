@@ -62,7 +62,11 @@ TEST(Solvers, ErgoCompareRunsTwoOptimizersOnTheBumpAndWritesItsFiles) {
   EXPECT_EQ(rows, 2);
   for (const char* name : {"paper-ncg", "nlopt-mma"}) {
     EXPECT_EQ(FirstLine(out + "/" + name + "_history.csv"),
-              "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step")
+              "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step,"
+              "evaluation_s,support_s,placement_s,predictor_s,contact_s,assembly_s,"
+              "factorization_s,solve_s,line_search_s,pressure_s,psi_s,adjoint_s,other_s,"
+              "equilibria,factorizations,pcg_iterations,line_search_trials,"
+              "adjoint_factorizations,adjoint_pcg_iterations,fresh_placements")
         << name;
   }
   EXPECT_NE(output.find("budget: 4 evaluations"), std::string::npos);

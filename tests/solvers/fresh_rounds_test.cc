@@ -13,6 +13,16 @@
 namespace ergo {
 namespace {
 
+// A stand-in for one design evaluation's time split (the quadratic costs nothing).
+EvaluationTiming OneEquilibrium() {
+  EvaluationTiming timing;
+  timing.equilibria = 1;
+  timing.factorizations = 2;
+  timing.total_seconds = 1e-3;
+  timing.assembly_seconds = 4e-4;
+  return timing;
+}
+
 // A quadratic whose value along an optimiser's path is lowered by a "drift" that grows with
 // the distance travelled since the path began (fresh score: the quadratic alone). The drift
 // rewards long paths, as a warm-started equilibrium can reward a design only on its path.
@@ -28,6 +38,7 @@ class DriftingObjective : public Objective {
     v.phi -= drift_ * travelled;
     v.zeta = v.phi;
     if (with_gradient && travelled > 0) v.gradient -= drift_ * (x - origin_) / travelled;
+    v.timing = OneEquilibrium();
     return v;
   }
   std::unique_ptr<Objective> Clone() const override {
@@ -51,8 +62,9 @@ TEST(Solvers, FreshRoundsKeepOnlyWhatTheFreshScoreConfirmsWithinTheBudget) {
   long fresh_checks = 0;
   RoundsProblem problem;
   problem.make_objective = [&] { return std::make_unique<DriftingObjective>(f, 0.05 * phi0); };
-  problem.fresh_score = [&](const Eigen::VectorXd& x) {
+  problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
     ++fresh_checks;
+    *timing += OneEquilibrium();
     return f->Evaluate(x, false).phi;
   };
   std::string error;
@@ -81,11 +93,21 @@ TEST(Solvers, FreshRoundsKeepOnlyWhatTheFreshScoreConfirmsWithinTheBudget) {
   ASSERT_GE(r.kept_candidate, 0);
   for (double value : r.candidate_fresh_phi)
     EXPECT_LE(r.candidate_fresh_phi[r.kept_candidate], value);
-  // The history runs on across rounds.
+  // The history runs on across rounds, its time split too.
   for (size_t i = 1; i < r.result.history.size(); ++i) {
     EXPECT_GE(r.result.history[i].evaluations, r.result.history[i - 1].evaluations);
     EXPECT_GT(r.result.history[i].iteration, r.result.history[i - 1].iteration);
+    EXPECT_GE(r.result.history[i].timing.equilibria, r.result.history[i - 1].timing.equilibria);
+    EXPECT_GE(r.result.history[i].timing.total_seconds,
+              r.result.history[i - 1].timing.total_seconds);
   }
+  // The run's time split sums every evaluation counted, fresh checks included, once.
+  EXPECT_EQ(r.result.timing.equilibria, r.result.evaluations);
+  EXPECT_EQ(r.result.timing.factorizations, 2 * r.result.evaluations);
+  EXPECT_NEAR(r.result.timing.total_seconds, 1e-3 * r.result.evaluations, 1e-12);
+  EXPECT_NEAR(r.result.timing.other_seconds(), 6e-4 * r.result.evaluations, 1e-12);
+  ASSERT_FALSE(r.result.history.empty());
+  EXPECT_LE(r.result.history.back().timing.equilibria, r.result.timing.equilibria);
 }
 
 TEST(Solvers, FreshRoundsReturnTheStartWhenNothingBeatsItAfresh) {
@@ -95,7 +117,9 @@ TEST(Solvers, FreshRoundsReturnTheStartWhenNothingBeatsItAfresh) {
   const Eigen::VectorXd x0 = f->Minimizer();
   RoundsProblem problem;
   problem.make_objective = [&] { return std::make_unique<DriftingObjective>(f, 1.0); };
-  problem.fresh_score = [&](const Eigen::VectorXd& x) { return f->Evaluate(x, false).phi; };
+  problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming*) {
+    return f->Evaluate(x, false).phi;
+  };
   std::string error;
   std::unique_ptr<Optimizer> optimizer = MakeOptimizer("steepest", {}, &error);
   Budget budget;

@@ -30,6 +30,7 @@ TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDiffere
 
   // The mean of the three placed problems, each evaluated on its own.
   double mean = 0;
+  long newton = 0;
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x0.size());
   for (const Placement& placement : placements) {
     DesignProblem placed = PlacedProblem(problem, placement);
@@ -37,9 +38,15 @@ TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDiffere
     ASSERT_TRUE(e.ok) << placement.name << ": " << e.message;
     mean += e.phi / 3;
     gradient += e.gradient / 3;
+    newton += e.equilibrium.iterations;
   }
   EXPECT_NEAR(at.phi, mean, 1e-12 * mean);
   EXPECT_LT((at.gradient - gradient).norm(), 1e-9 * gradient.norm());
+  // Its time split is the sum of the placements' (wall time: the slowest of them).
+  EXPECT_EQ(at.timing.equilibria, 3);
+  EXPECT_EQ(at.timing.fresh_placements, 3);
+  EXPECT_EQ(at.timing.newton_iterations, newton);
+  EXPECT_GE(at.timing.total_seconds, at.seconds);
   // The off-centre placements see the bump elsewhere: the mean is not the centred value.
   DesignProblem centred(problem);
   EXPECT_GT(std::abs(centred.Evaluate(x0, false).phi - at.phi), 1e-3 * at.phi);

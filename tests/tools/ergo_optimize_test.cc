@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -35,6 +37,85 @@ bool MatplotlibAvailable() { return !FindPythonWithMatplotlib().empty(); }
 std::string Read(const std::string& path) {
   std::ifstream in(path);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// history.csv: its header and its rows (no field of it is quoted).
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  int Column(const std::string& name) const {
+    for (size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return static_cast<int>(i);
+    return -1;
+  }
+};
+
+Csv ReadCsv(const std::string& path) {
+  auto split = [](const std::string& line) {
+    std::vector<std::string> fields;
+    std::stringstream stream(line);
+    std::string field;
+    while (std::getline(stream, field, ',')) fields.push_back(field);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    return fields;
+  };
+  Csv csv;
+  std::ifstream in(path);
+  std::string line;
+  if (std::getline(in, line)) csv.header = split(line);
+  while (std::getline(in, line)) csv.rows.push_back(split(line));
+  return csv;
+}
+
+// The time split's entries (ergo/design/evaluation_timing.h) as history.csv's last columns and
+// summary.json's time_split keys.
+const std::vector<std::string> kTimeSplitSeconds = {
+    "evaluation_s",    "support_s", "placement_s",   "predictor_s", "contact_s", "assembly_s",
+    "factorization_s", "solve_s",   "line_search_s", "pressure_s",  "psi_s",     "adjoint_s"};
+const std::vector<std::string> kTimeSplitCounts = {
+    "equilibria",         "factorizations",         "pcg_iterations",
+    "line_search_trials", "adjoint_factorizations", "adjoint_pcg_iterations",
+    "fresh_placements"};
+
+// history.csv keeps its first columns and appends the time split, cumulative (never
+// decreasing) over the rows; summary.json's time_split holds the run's totals.
+void ExpectTimeSplit(const std::string& dir) {
+  const Csv csv = ReadCsv(dir + "/history.csv");
+  const std::vector<std::string> first = {"iteration", "evaluations", "newton_iterations",
+                                          "wall_s",    "phi",         "zeta",
+                                          "psi",       "grad_norm",   "step"};
+  ASSERT_GE(csv.header.size(), first.size());
+  EXPECT_EQ(std::vector<std::string>(csv.header.begin(), csv.header.begin() + first.size()), first);
+  ASSERT_FALSE(csv.rows.empty());
+  std::vector<std::string> cumulative = kTimeSplitSeconds;
+  cumulative.insert(cumulative.end(), kTimeSplitCounts.begin(), kTimeSplitCounts.end());
+  for (const std::string& name : cumulative) {
+    const int column = csv.Column(name);
+    ASSERT_GE(column, static_cast<int>(first.size())) << name;
+    double previous = 0;
+    for (const std::vector<std::string>& row : csv.rows) {
+      ASSERT_EQ(row.size(), csv.header.size());
+      const double value = std::stod(row[column]);
+      EXPECT_GE(value, previous) << name;
+      previous = value;
+    }
+  }
+  ASSERT_GE(csv.Column("other_s"), 0);
+  const Json summary = ReadJsonFile(dir + "/summary.json");
+  const Json& split = GetMember(summary, "time_split", "summary");
+  for (const std::string& name : cumulative) {
+    EXPECT_GE(GetNumber(split, name, "time_split"), 0.0) << name;
+    // The last history row is at most the run's total (evaluations after it: fresh checks).
+    EXPECT_LE(std::stod(csv.rows.back()[csv.Column(name)]),
+              GetNumber(split, name, "time_split") * (1 + 1e-12))
+        << name;
+  }
+  EXPECT_NE(FindMember(split, "other_s"), nullptr);
+  EXPECT_GT(GetNumber(split, "evaluation_s", "time_split"), 0.0);
+  EXPECT_GT(GetNumber(split, "factorizations", "time_split"), 0.0);
+  // One equilibrium per evaluation (one placement).
+  EXPECT_EQ(GetNumber(split, "equilibria", "time_split"),
+            GetNumber(summary, "evaluations", "summary"));
 }
 
 ChildProcessResult RunTool(std::vector<std::string> arguments, const std::string& log) {
@@ -106,6 +187,7 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
                           "body_vertices",
                           "support_vertices",
                           "evaluations",
+                          "time_split",
                           "stop_reason",
                           "candidates"}) {
     EXPECT_NE(FindMember(summary, key), nullptr) << key;
@@ -125,6 +207,7 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   }
   const Json& skin = GetMember(summary, "skin_zeta", "summary");
   EXPECT_LT(GetNumber(skin, "fresh", "skin_zeta"), GetNumber(skin, "initial", "skin_zeta"));
+  ExpectTimeSplit(dir);
   ExpectCompleteOutputs(dir, MatplotlibAvailable());
   fs::remove_all(fs::path(dir).parent_path());
 }
@@ -244,6 +327,13 @@ TEST(ToolsOptimize, AKilledRunLeavesThePreviousOutputOrNoneAndResumesToTheSameDe
             GetNumber(reference, "optimized_score", "reference"));
   EXPECT_EQ(GetNumber(resumed, "evaluations", "resumed"),
             GetNumber(reference, "evaluations", "reference"));
+  // The time split's counts run on through the checkpoint (its seconds are this machine's).
+  for (const char* count : {"equilibria", "factorizations", "line_search_trials"}) {
+    EXPECT_EQ(GetNumber(GetMember(resumed, "time_split", "resumed"), count, "resumed"),
+              GetNumber(GetMember(reference, "time_split", "reference"), count, "reference"))
+        << count;
+  }
+  ExpectTimeSplit(dir);
   EXPECT_TRUE(Read(dir + "/support_optimized.ply") == Read(whole + "/support_optimized.ply"))
       << "the resumed design differs from the uninterrupted one";
   // The resumed run cleared the stale temporary and, complete, its checkpoint.

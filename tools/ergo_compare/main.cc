@@ -268,10 +268,10 @@ int Compare() {
   const std::vector<Placement> robust =
       RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
   RoundsProblem rounds_problem;
-  rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
-    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag());
+  rounds_problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
+    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing);
   };
-  const double phi0 = robust.size() > 1 ? rounds_problem.fresh_score(x0) : start.phi;
+  const double phi0 = robust.size() > 1 ? rounds_problem.fresh_score(x0, nullptr) : start.phi;
   RoundsOptions rounds_options;
   rounds_options.round_evaluations = FLAGS_round_evals;
   rounds_options.candidates = FLAGS_candidates;

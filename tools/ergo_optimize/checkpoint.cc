@@ -9,6 +9,7 @@
 
 #include <gflags/gflags.h>
 
+#include "ergo/design/evaluation_timing.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/json.h"
 
@@ -130,6 +131,7 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   j["evaluations"] = state.evaluations;
   j["newton_iterations"] = state.newton_iterations;
   j["failed_evaluations"] = state.failed_evaluations;
+  j["time_split"] = TimingJson(state.timing);
   j["rounds"] = state.rounds;
   j["next_iteration"] = state.next_iteration;
   j["seconds"] = state.seconds;
@@ -138,12 +140,14 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   j["kept_candidate"] = state.kept_candidate;
   j["finished"] = state.finished;
   j["stop_reason"] = state.stop_reason;
-  Json history = Json::array();
+  Json history = Json::array(), history_timing = Json::array();
   for (const IterationRecord& r : state.history) {
     history.push_back(Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds,
                                    r.phi, r.zeta, r.psi, r.gradient_norm, r.step}));
+    history_timing.push_back(TimingJson(r.timing));
   }
   j["history"] = history;
+  j["history_time_split"] = history_timing;
   WriteJsonFile(path, j, 0);
 }
 
@@ -220,6 +224,9 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
   state.evaluations = static_cast<long>(GetNumber(j, "evaluations", source));
   state.newton_iterations = static_cast<long>(GetNumber(j, "newton_iterations", source));
   state.failed_evaluations = static_cast<long>(GetNumber(j, "failed_evaluations", source));
+  // The time split (absent from checkpoints written before it existed: zeros).
+  if (const Json* timing = FindMember(j, "time_split"))
+    state.timing = TimingFromJson(*timing, source);
   state.rounds = static_cast<int>(GetNumber(j, "rounds", source));
   state.next_iteration = static_cast<int>(GetNumber(j, "next_iteration", source));
   state.seconds = GetNumber(j, "seconds", source);
@@ -246,6 +253,12 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
     r.gradient_norm = h[7];
     r.step = h[8];
     state.history.push_back(r);
+  }
+  const Json* history_timing = FindMember(j, "history_time_split");
+  if (history_timing && history_timing->is_array() &&
+      history_timing->size() == state.history.size()) {
+    for (size_t i = 0; i < state.history.size(); ++i)
+      state.history[i].timing = TimingFromJson((*history_timing)[i], source);
   }
   return state;
 }

@@ -253,12 +253,12 @@ int Run() {
     if (robust.size() > 1) return std::make_unique<RobustDesignObjective>(path, robust);
     return std::make_unique<DesignObjective>(path);
   };
-  rounds_problem.fresh_score = [&](const Eigen::VectorXd& x) {
-    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag());
+  rounds_problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
+    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing);
   };
   double phi0_objective = phi0;
   if (robust.size() > 1) {
-    phi0_objective = rounds_problem.fresh_score(x0);
+    phi0_objective = rounds_problem.fresh_score(x0, nullptr);
     std::cout << "objective: mean over " << robust.size() << " placements; at x₀ " << phi0_objective
               << "\n";
   }

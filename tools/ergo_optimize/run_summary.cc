@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 
+#include "ergo/design/evaluation_timing.h"
+
 namespace ergo {
 namespace {
 
@@ -162,6 +164,9 @@ Json SummaryJson(const RunSummary& s) {
   j["evaluations"] = s.result.evaluations;
   j["failed_evaluations"] = s.result.failed_evaluations;
   j["newton_iterations"] = s.result.newton_iterations;
+  // Where the optimisation's evaluations spent their time (those counted in `evaluations`;
+  // seconds summed per evaluation, so parallel probes and placements exceed wall_s).
+  j["time_split"] = TimingJson(s.result.timing);
   j["stop_reason"] = s.result.stop_reason;
   j["interrupted"] = s.interrupted;
   j["load_N"] = scenario.body->TotalLoad().norm();
@@ -264,6 +269,8 @@ std::string SummaryMarkdown(const RunSummary& s) {
   md << "Optimiser " << s.optimizer << ": " << s.result.evaluations << " evaluations ("
      << s.result.failed_evaluations << " failed), " << s.result.newton_iterations
      << " Newton iterations; stopped: " << s.result.stop_reason << ".\n\n"
+     << "Time of those evaluations (summed per evaluation; summary.json's time_split): "
+     << s.result.timing.BriefReport() << ".\n\n"
      << "Files: support_initial/optimized.{ply,stl} (millimetres; the STL is closed and "
         "print-ready), body_*.vtu and support_*.vtu (pressure_Pa, contact_force_N, "
         "displacement_m; the optimised ones placed afresh), history.csv, pressure_maps.png, "

@@ -3,7 +3,8 @@
 // path the optimiser followed beside them, the placement checks (the body landing a few
 // millimetres off or tilted), what the person feels (the skin's side of ζ, its contact area,
 // the peak pressure and its relief, with the clinical reading for a shoe) and the run's
-// counts. SI units in the JSON; the markdown shows kPa, mm and cm².
+// counts with their time split (time_split: ergo/design/evaluation_timing.h). SI units in the
+// JSON; the markdown shows kPa, mm and cm².
 #pragma once
 
 #include <limits>
