@@ -138,7 +138,7 @@ RoundsResult BaselineRounds(const DesignProblem& problem, const BodyState& start
   RoundsResult rounds;
   rounds.rounds = 1;
   rounds.kept_x = design.x;
-  rounds.kept_fresh_phi = rounds_problem.fresh_score(design.x);
+  rounds.kept_fresh_phi = rounds_problem.fresh_score(design.x, &rounds.result.timing);
   rounds.kept_followed_phi = std::numeric_limits<double>::quiet_NaN();
   OptimizerResult& result = rounds.result;
   result.optimizer = FLAGS_designer;
