@@ -1,10 +1,13 @@
 // ergo_simulate: the static contact equilibrium of a body (a directory written by
 // `ergo_body build`) resting on a support mesh under gravity and an external wrench (paper
 // §3.3–3.5). Writes OUT/body_deformed.vtu, OUT/support.vtu and OUT/summary.json, as one unit
-// (a killed run leaves the previous OUT or none). Prints one line per Newton iteration.
+// (a killed run leaves the previous OUT or none). The work is SolveStaticEquilibrium
+// (ergo/design/static_equilibrium.h); its progress (placement, calibration steps, Newton
+// iterations, elapsed time) goes to stderr unless --progress=false.
 // Exit status: 0 converged with the stiffness asked for, 1 the computation did not succeed
-// (not converged, no contact, stiffness calibration failed: the summary says why), 2 unusable
-// input, 130 / 143 interrupted (nothing written).
+// (not converged, no contact, stiffness calibration failed: the summary says why; or
+// --max_seconds ran out: nothing written), 2 unusable input, 130 / 143 interrupted (nothing
+// written).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
