@@ -47,7 +47,6 @@ Underside MeasureUnderside(const DesignProblem& problem, const BodyState& start)
   for (Eigen::Index i = 0; i < active.size(); ++i) {
     const int v = active[i];
     const Eigen::Vector3d p = support.vertices.row(v);
-    const double height = p.dot(u.up);
     double best = std::numeric_limits<double>::infinity();
     for (Eigen::Index s = 0; s < skin.size(); ++s) {
       const Eigen::Vector3d q = u.positions.row(skin[s]);
@@ -57,7 +56,6 @@ Underside MeasureUnderside(const DesignProblem& problem, const BodyState& start)
       best = along;
       u.skin_vertex[v] = skin[s];
     }
-    (void)height;
     if (u.skin_vertex[v] >= 0) {
       u.gap[v] = best;
       lowest = std::min(lowest, best);
@@ -173,11 +171,9 @@ BaselineDesign PoseToSeatDesign(const DesignProblem& problem, const BodyState& s
   const double size =
       (underside.positions.colwise().maxCoeff() - underside.positions.colwise().minCoeff()).norm();
   const std::vector<int> free = body.lock().FreeComponents();
-  const double p_mean = load.norm() / [&] {
-    double a = 0;
-    for (int s : contact) a += areas[s];
-    return a;
-  }();
+  double area_sum = 0;
+  for (int s : contact) area_sum += areas[s];
+  const double p_mean = load.norm() / area_sum;
   Eigen::MatrixXd B(free.size(), contact.size());
   Eigen::VectorXd b(free.size());
   for (size_t row = 0; row < free.size(); ++row) {
@@ -196,8 +192,6 @@ BaselineDesign PoseToSeatDesign(const DesignProblem& problem, const BodyState& s
   Eigen::VectorXd p = Eigen::VectorXd::Ones(contact.size());  // p / p_mean
   ceres::Problem problem_ls;
   std::vector<double*> blocks;
-  double area_sum = 0;
-  for (int s : contact) area_sum += areas[s];
   for (size_t col = 0; col < contact.size(); ++col) {
     double* block = p.data() + col;
     blocks.push_back(block);
