@@ -63,7 +63,7 @@ std::function<void(const std::string&)> ProgressSink(const py::object& progress)
   };
 }
 
-// Everything a single number option of BodyBuildOptions can be, by its flag name.
+// One option of BodyBuildOptions by its flag name; a value of the wrong type is an InputError.
 void SetBuildOption(BodyBuildOptions* options, const std::string& name, const py::handle& value) {
   auto number = [&]() {
     try {
@@ -72,12 +72,18 @@ void SetBuildOption(BodyBuildOptions* options, const std::string& name, const py
       throw InputError("--" + name, "", "is not a number", "give a number, e.g. " + name + "=0.01");
     }
   };
+  auto text = [&]() {
+    if (!py::isinstance<py::str>(value))
+      throw InputError("--" + name, "", "is not a string",
+                       "give a path or a name, e.g. " + name + "=\"...\"");
+    return value.cast<std::string>();
+  };
   if (name == "surface")
-    options->surface = value.cast<std::string>();
+    options->surface = text();
   else if (name == "unit")
-    options->unit = UnitArgument(value.cast<std::string>(), "--unit");
+    options->unit = UnitArgument(text(), "--unit");
   else if (name == "shape")
-    options->shape = value.cast<std::string>();
+    options->shape = text();
   else if (name == "outer_radius")
     options->outer_radius = number();
   else if (name == "core_radius")
@@ -87,11 +93,11 @@ void SetBuildOption(BodyBuildOptions* options, const std::string& name, const py
   else if (name == "depth")
     options->depth = number();
   else if (name == "depth_samples")
-    options->depth_samples = value.cast<std::string>();
+    options->depth_samples = text();
   else if (name == "youngs_modulus")
     options->youngs_modulus = number();
   else if (name == "stiffness_samples")
-    options->stiffness_samples = value.cast<std::string>();
+    options->stiffness_samples = text();
   else if (name == "poisson_ratio")
     options->poisson_ratio = number();
   else if (name == "density")

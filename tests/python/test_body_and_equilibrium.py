@@ -90,6 +90,8 @@ def test_bad_options_raise_with_the_flag_named(ball, tmp_path):
     with pytest.raises(ergo.InputError, match="--edge_length"):
         ergo.build_body(shape="sphere_shell", outer_radius=0.05, core_radius=0.03,
                         youngs_modulus=1e4)
+    with pytest.raises(ergo.InputError, match="--shape: is not a string"):
+        ergo.build_body(shape=3, edge_length=0.01)
     with pytest.raises(ergo.InputError, match="not an option of build_body"):
         ergo.build_body(shape="sphere_shell", edge_lenght=0.01)
     with pytest.raises(ergo.InputError, match="lock"):
