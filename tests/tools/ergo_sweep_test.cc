@@ -1,14 +1,12 @@
 // ergo_sweep end to end on the bump scene: a 2 × 2 sweep, its reports, a resume that keeps
 // the finished cases, and a failing case reported without stopping the others.
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "tests/support/test_paths.h"
+#include "tests/support/text_files.h"
 #include "tools/common/child_process.h"
 
 namespace ergo {
@@ -16,16 +14,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Read(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string Read(const fs::path& path) { return testing::ReadTextFile(path.string()); }
 
-int CountLines(const std::string& text) {
-  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
+using testing::CountLines;
 
 struct Sweep {
   int status = -1;

@@ -92,15 +92,28 @@ std::string CommandLineForDisplay(const std::vector<std::string>& argv) {
   return line;
 }
 
-std::string ToolScriptPath(const std::string& name) {
+namespace {
+
+// <prefix>/share/ergo/<folder>/<name> beside the running program, if it exists; else "".
+std::string InstalledFile(const std::string& folder, const std::string& name) {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const std::filesystem::path installed =
-        self.parent_path().parent_path() / "share" / "ergo" / "tools" / name;
-    if (std::filesystem::exists(installed, error)) return installed.string();
-  }
-  return std::string(ERGO_TOOLS_DIR) + "/" + name;
+  if (error) return "";
+  const std::filesystem::path installed =
+      self.parent_path().parent_path() / "share" / "ergo" / folder / name;
+  return std::filesystem::exists(installed, error) ? installed.string() : "";
+}
+
+}  // namespace
+
+std::string ToolScriptPath(const std::string& name) {
+  const std::string installed = InstalledFile("tools", name);
+  return installed.empty() ? std::string(ERGO_TOOLS_DIR) + "/" + name : installed;
+}
+
+std::string DataFilePath(const std::string& name) {
+  const std::string installed = InstalledFile("data", name);
+  return installed.empty() ? std::string(ERGO_TOOLS_DIR) + "/../data/" + name : installed;
 }
 
 std::string FindPythonWithMatplotlib(const std::string& preferred) {

@@ -46,4 +46,9 @@ std::string FindPythonWithMatplotlib(const std::string& preferred = "");
 // tree the tool was built from.
 std::string ToolScriptPath(const std::string& name);
 
+// A file shipped with ergo's data (e.g. "chair.flags", a scene's flagfile): in
+// <prefix>/share/ergo/data/ beside an installed tool when it is there, else in the source
+// tree's data/.
+std::string DataFilePath(const std::string& name);
+
 }  // namespace ergo

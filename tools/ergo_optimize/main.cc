@@ -50,6 +50,11 @@ DEFINE_string(designer, "ergo",
               "who designs the support: ergo (the optimiser, --optimizer) or a geometric "
               "baseline, sit-and-relax or pose-to-seat (solvers/geometric_baselines.h), scored "
               "and reported the same way");
+DEFINE_string(start_designer, "none",
+              "--designer=ergo: where the optimiser starts: none (the scene's initial design) or "
+              "the design of a geometric baseline, sit-and-relax or pose-to-seat (paper §7: "
+              "ergo started from the Sit & Relax surface); scores stay relative to the scene's "
+              "initial design");
 DEFINE_double(baseline_depth, 0.05,
               "sit-and-relax: how far the rigid skin is pushed into the flat support for its "
               "pressure map, m");
@@ -116,24 +121,37 @@ void ValidateRunFlags() {
       FLAGS_designer != "pose-to-seat")
     throw InputError("--designer", "", "'" + FLAGS_designer + "' is unknown",
                      "use ergo, sit-and-relax or pose-to-seat");
+  if (FLAGS_start_designer != "none" && FLAGS_start_designer != "sit-and-relax" &&
+      FLAGS_start_designer != "pose-to-seat")
+    throw InputError("--start_designer", "", "'" + FLAGS_start_designer + "' is unknown",
+                     "use none, sit-and-relax or pose-to-seat");
+  if (FLAGS_start_designer != "none" && FLAGS_designer != "ergo")
+    throw InputError("--start_designer", "", "only applies to --designer=ergo",
+                     "drop --start_designer, or use --designer=ergo");
   RequireInRange("baseline_depth", FLAGS_baseline_depth, 1e-4, 0.5, "metres, e.g. 0.05");
   RequireInRange("baseline_contact_distance", FLAGS_baseline_contact_distance, 0, 0.5,
                  "metres; 0 = every downward-facing skin vertex");
   RequireInRange("baseline_smoothness", FLAGS_baseline_smoothness, 0, 1e6, "e.g. 1");
 }
 
-// A geometric baseline's design in place of the optimiser's rounds: one fresh evaluation,
-// reported like a one-step run so the summary, checks and files are those of any design.
-RoundsResult BaselineRounds(const DesignProblem& problem, const BodyState& start,
-                            const RoundsProblem& rounds_problem, double phi0) {
+// The design of the geometric baseline `method` (sit-and-relax or pose-to-seat) with the
+// --baseline_* flags.
+BaselineDesign Baseline(const std::string& method, const DesignProblem& problem,
+                        const BodyState& start) {
   BaselineOptions options;
   options.negative_image_depth = FLAGS_baseline_depth;
   options.contact_distance = FLAGS_baseline_contact_distance;
   options.fit.smoothness = FLAGS_baseline_smoothness;
+  return method == "sit-and-relax" ? SitAndRelaxDesign(problem, start, options)
+                                   : PoseToSeatDesign(problem, start, options);
+}
+
+// A geometric baseline's design in place of the optimiser's rounds: one fresh evaluation,
+// reported like a one-step run so the summary, checks and files are those of any design.
+RoundsResult BaselineRounds(const DesignProblem& problem, const BodyState& start,
+                            const RoundsProblem& rounds_problem, double phi0) {
   const auto begin = std::chrono::steady_clock::now();
-  const BaselineDesign design = FLAGS_designer == "sit-and-relax"
-                                    ? SitAndRelaxDesign(problem, start, options)
-                                    : PoseToSeatDesign(problem, start, options);
+  const BaselineDesign design = Baseline(FLAGS_designer, problem, start);
   std::cout << design.Describe() << "\n";
   RoundsResult rounds;
   rounds.rounds = 1;
@@ -311,10 +329,28 @@ int Run() {
               << " evaluations, kept design " << resumed.kept_fresh_phi / phi0_objective
               << " of the start)\n";
   }
+  // Where the optimiser starts: x₀, or a baseline's design (scored against x₀ all the same).
+  Eigen::VectorXd x_start = x0;
+  double phi_start = phi0_objective;
+  if (FLAGS_designer == "ergo" && FLAGS_start_designer != "none" && FLAGS_resume.empty()) {
+    const BaselineDesign design = Baseline(FLAGS_start_designer, problem, scenario.start);
+    x_start = design.x;
+    phi_start = rounds_problem.fresh_score(x_start, nullptr);
+    summary.start = FLAGS_start_designer;
+    summary.start_score = phi_start;
+    std::cout << "start: " << design.Describe() << "; its objective " << phi_start << " ("
+              << phi_start / phi0_objective << " of the initial design's)\n";
+    if (!std::isfinite(phi_start)) {
+      std::cerr << "ergo_optimize: the body placed on the " << FLAGS_start_designer
+                << " design did not reach equilibrium; run without --start_designer, or "
+                   "change the --baseline_* flags\n";
+      return 1;
+    }
+  }
   const RoundsResult rounds =
       FLAGS_designer != "ergo"
           ? BaselineRounds(problem, scenario.start, rounds_problem, phi0_objective)
-          : MinimizeInRounds(*optimizer, rounds_problem, x0, phi0_objective, budget, control,
+          : MinimizeInRounds(*optimizer, rounds_problem, x_start, phi_start, budget, control,
                              rounds_options, FLAGS_resume.empty() ? nullptr : &resumed);
   summary.result = rounds.result;
   summary.interrupted = StopOnSignals::stopped();
@@ -350,6 +386,7 @@ int Run() {
   if (!summary.optimized.evaluation.ok) {
     std::cout << "the body placed afresh on the optimised design did not reach equilibrium ("
               << summary.optimized.evaluation.message << "); keeping the initial design\n";
+    summary.kept_design_failure = summary.optimized.evaluation.message;
     kept = x0;
     summary.optimized = summary.initial;
   }

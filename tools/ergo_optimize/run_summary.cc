@@ -73,11 +73,14 @@ Json SummaryJson(const RunSummary& s) {
   j["optimizer"] = s.optimizer;
   j["placement"] = s.placement;
   j["robust_placements"] = s.robust_placements;
+  j["start"] = s.start;
+  j["start_score"] = Number(s.start_score);
   // The headline: the body placed afresh on the kept design.
   j["initial_score"] = phi0;
   j["optimized_score"] = Number(Of(s.optimized, fresh.phi));
   j["reduction_percent"] = Number(Of(s.optimized, Reduction(phi0, fresh.phi)));
   j["fresh_placement_converged"] = fresh.ok;
+  j["kept_design_failure"] = s.kept_design_failure.empty() ? Json() : Json(s.kept_design_failure);
   j["followed_score"] = Number(s.followed_phi);
   j["followed_reduction_percent"] = Number(Reduction(phi0, s.followed_phi));
   j["initial_zeta"] = initial.zeta;
@@ -92,14 +95,15 @@ Json SummaryJson(const RunSummary& s) {
   j["optimized_skin_zeta"] = Number(Of(s.optimized, fresh.zeta_human));
   j["skin_zeta_reduction_percent"] =
       Number(Of(s.optimized, Reduction(initial.zeta_human, fresh.zeta_human)));
-  j["skin_contact_area_m2"] = ThreeWay(s.initial.skin_contact_area,
-                                       Of(s.followed, s.followed.skin_contact_area),
-                                       Of(s.optimized, s.optimized.skin_contact_area));
+  j["skin_contact_area_m2"] =
+      ThreeWay(s.initial.skin_contact_area, Of(s.followed, s.followed.skin_contact_area),
+               Of(s.optimized, s.optimized.skin_contact_area));
   j["initial_peak_pressure_Pa"] = s.initial.peak_pressure;
   j["fresh_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
   j["optimized_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
   j["followed_peak_pressure_Pa"] = Number(Of(s.followed, s.followed.peak_pressure));
-  const double relief = Of(s.optimized, Reduction(s.initial.peak_pressure, s.optimized.peak_pressure));
+  const double relief =
+      Of(s.optimized, Reduction(s.initial.peak_pressure, s.optimized.peak_pressure));
   j["peak_relief_percent"] = Number(relief);
   if (IsShoe(s)) {
     Json offloading = Json::object();
@@ -185,10 +189,13 @@ std::string SummaryMarkdown(const RunSummary& s) {
   };
   std::ostringstream md;
   md << "# ergo_optimize: " << s.scenario->name << "\n\n" << s.scenario->description << "\n\n";
+  if (s.start != "initial")
+    md << "The optimiser started from the " << s.start << " design (its objective "
+       << Format("%.4g", s.start_score) << "); every score below is relative to the initial "
+       << "design.\n\n";
   if (fresh.ok) {
-    md << "**Placed afresh on the optimised design, the body scores φ "
-       << Format("%.4g", fresh.phi) << ", " << Format("%.1f", Reduction(phi0, fresh.phi))
-       << " % below the initial design**";
+    md << "**Placed afresh on the optimised design, the body scores φ " << Format("%.4g", fresh.phi)
+       << ", " << Format("%.1f", Reduction(phi0, fresh.phi)) << " % below the initial design**";
     if (std::isfinite(s.followed_phi))
       md << " (on the path the optimiser followed: "
          << Format("%.1f", Reduction(phi0, s.followed_phi)) << " %)";
@@ -202,7 +209,8 @@ std::string SummaryMarkdown(const RunSummary& s) {
     md << "**The body placed afresh on the optimised design did not reach equilibrium: "
        << fresh.message << "**\n\n";
   }
-  md << "| | initial | optimised, placed afresh | optimised, optimiser's path |\n|---|---|---|---|\n"
+  md << "| | initial | optimised, placed afresh | optimised, optimiser's path "
+        "|\n|---|---|---|---|\n"
      << triple("score φ", "%.4g", 1, phi0, Of(s.optimized, fresh.phi), s.followed_phi)
      << triple("ζ (pressure term)", "%.4g", 1, initial.zeta, Of(s.optimized, fresh.zeta),
                Of(s.followed, followed.zeta))
@@ -257,9 +265,9 @@ std::string SummaryMarkdown(const RunSummary& s) {
              ? "radius " + Format("%.1f", design.pressure.smoothing_radius * 1e3) + " mm"
              : std::string("umbrella"))
      << "; evaluations placed " << s.placement
-     << (s.robust_placements > 1 ? ", objective averaged over " +
-                                       std::to_string(s.robust_placements) + " placements"
-                                 : std::string())
+     << (s.robust_placements > 1
+             ? ", objective averaged over " + std::to_string(s.robust_placements) + " placements"
+             : std::string())
      << ".\n\n";
   if (!s.candidate_phi.empty()) {
     md << "Kept design: the best of " << s.candidate_phi.size()

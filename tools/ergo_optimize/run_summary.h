@@ -31,11 +31,15 @@ struct PlacementOutcome {
 struct RunSummary {
   const Scenario* scenario = nullptr;
   std::string optimizer;
-  std::string placement;     // how evaluations were placed: fresh, anchored, followed
+  std::string placement;      // how evaluations were placed: fresh, anchored, followed
   int robust_placements = 1;  // placements averaged by the objective
-  DesignReport initial;       // x₀, placed afresh
-  DesignReport optimized;     // the kept design, placed afresh: the headline
-  DesignReport followed;      // the kept design on the optimiser's own path (may not be ok)
+  // Where the optimiser started: "initial" (x₀) or a baseline's design, and the objective's
+  // value there (NaN for x₀, whose scores are initial_score).
+  std::string start = "initial";
+  double start_score = std::numeric_limits<double>::quiet_NaN();
+  DesignReport initial;    // x₀, placed afresh
+  DesignReport optimized;  // the kept design, placed afresh: the headline
+  DesignReport followed;   // the kept design on the optimiser's own path (may not be ok)
   // The optimiser's own value of the kept design (its path), known even where the path's
   // report is not (after a resume): summary's followed_score.
   double followed_phi = std::numeric_limits<double>::quiet_NaN();
@@ -44,7 +48,10 @@ struct RunSummary {
   std::vector<double> candidate_fresh_phi;  // the same designs placed afresh
   int kept_candidate = 0;
   std::string post_smoothing;  // one line when post-smoothing was tried
-  OptimizerResult result;      // counts, stop reason (its history is written separately)
+  // Non-empty when the body placed afresh on the designed support found no equilibrium and
+  // the initial design is reported in its place: why (summary.json's kept_design_failure).
+  std::string kept_design_failure;
+  OptimizerResult result;  // counts, stop reason (its history is written separately)
   double gamma = 0, wall_seconds = 0;
   bool interrupted = false;
 };

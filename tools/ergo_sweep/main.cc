@@ -14,18 +14,14 @@
 // failed (sweep.md says which and why), 2 unusable input, 130 / 143 stopped by a signal
 // (cases running then finish or stop with it; rerun the same command to resume).
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <gflags/gflags.h>
@@ -34,8 +30,8 @@
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/json.h"
-#include "ergo/mesh/seconds_since.h"
 #include "solvers/history_csv.h"
+#include "tools/common/case_runner.h"
 #include "tools/common/child_process.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/run_signals.h"
@@ -117,42 +113,11 @@ void ValidateAxes(const std::vector<SweepAxis>& axes) {
   }
 }
 
-// A finished case: its summary.json exists and the run was not interrupted.
-bool Finished(const fs::path& case_dir) {
-  std::error_code error;
-  if (!fs::is_regular_file(case_dir / "summary.json", error)) return false;
-  try {
-    const Json summary = ReadJsonFile((case_dir / "summary.json").string());
-    const Json* interrupted = FindMember(summary, "interrupted");
-    return !(interrupted && interrupted->is_boolean() && interrupted->get<bool>());
-  } catch (const InputError&) {
-    return false;  // unreadable: run it again
-  }
-}
-
-struct CaseOutcome {
+// A case of the sweep: its plan and how it ended.
+struct SweepOutcome {
   const SweepCase* plan = nullptr;
-  bool finished = false;  // summary.json written and not interrupted
-  bool kept = false;      // finished in an earlier run of the sweep
-  std::string failure;    // why not, for sweep.md
-  double seconds = 0;
-  Json summary;
+  CaseOutcome run;
 };
-
-// The last few non-empty lines of a case's log: where ergo_optimize says what went wrong.
-std::string LogTail(const fs::path& log, int lines) {
-  std::ifstream in(log);
-  std::vector<std::string> kept;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    kept.push_back(line);
-    if (static_cast<int>(kept.size()) > lines) kept.erase(kept.begin());
-  }
-  std::string text;
-  for (const std::string& l : kept) text += (text.empty() ? "" : " / ") + l;
-  return text;
-}
 
 double Field(const Json& summary, const char* key) {
   const Json* value = FindMember(summary, key);
@@ -183,25 +148,25 @@ const std::vector<std::pair<const char*, const char*>> kColumns = {
     {"wall_s", "wall_s"}};
 
 void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
-                  const std::vector<CaseOutcome>& outcomes) {
+                  const std::vector<SweepOutcome>& outcomes) {
   WriteFileAtomically((dir / "sweep.csv").string(), [&](std::ostream& out) {
     out << "case";
     for (const SweepAxis& axis : axes) out << "," << CsvField(axis.flag);
     out << ",status";
     for (const auto& [column, key] : kColumns) out << "," << column;
     out << ",message\n";
-    for (const CaseOutcome& o : outcomes) {
+    for (const SweepOutcome& o : outcomes) {
       out << CsvField(o.plan->name);
       for (const auto& [flag, value] : o.plan->flags) out << "," << CsvField(value);
-      out << "," << (o.finished ? "ok" : "failed");
+      out << "," << (o.run.finished ? "ok" : "failed");
       for (const auto& [column, key] : kColumns)
-        out << "," << (o.finished ? Number(Field(o.summary, key), 12) : "");
-      out << "," << CsvField(o.failure) << "\n";
+        out << "," << (o.run.finished ? Number(Field(o.run.summary, key), 12) : "");
+      out << "," << CsvField(o.run.failure) << "\n";
     }
   });
   WriteFileAtomically((dir / "sweep.md").string(), [&](std::ostream& out) {
     const long failed = std::count_if(outcomes.begin(), outcomes.end(),
-                                      [](const CaseOutcome& o) { return !o.finished; });
+                                      [](const SweepOutcome& o) { return !o.run.finished; });
     out << "# Sweep\n\n" << outcomes.size() << " cases";
     for (const SweepAxis& axis : axes) out << ", " << axis.flag << " × " << axis.values.size();
     out << "; " << outcomes.size() - failed << " finished, " << failed << " failed. Scores are "
@@ -211,14 +176,14 @@ void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
            "evaluations | wall s |\n|";
     for (size_t k = 0; k < axes.size() + 6; ++k) out << "---|";
     out << "\n";
-    for (const CaseOutcome& o : outcomes) {
+    for (const SweepOutcome& o : outcomes) {
       out << "|";
       for (const auto& [flag, value] : o.plan->flags) out << " " << value << " |";
-      if (!o.finished) {
+      if (!o.run.finished) {
         out << " **failed** | | | | | |\n";
         continue;
       }
-      const Json& s = o.summary;
+      const Json& s = o.run.summary;
       out << " " << Percent(Field(s, "reduction_percent")) << " | "
           << Percent(Field(s, "followed_reduction_percent")) << " | "
           << Percent(Field(s, "worst_placement_reduction_percent")) << " | "
@@ -228,8 +193,8 @@ void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
     }
     if (failed > 0) {
       out << "\n## Failed cases\n\n";
-      for (const CaseOutcome& o : outcomes) {
-        if (!o.finished) out << "- `" << o.plan->name << "`: " << o.failure << "\n";
+      for (const SweepOutcome& o : outcomes) {
+        if (!o.run.finished) out << "- `" << o.plan->name << "`: " << o.run.failure << "\n";
       }
     }
   });
@@ -255,99 +220,30 @@ int Run(const SweepArguments& arguments) {
   RequireInRange("jobs", static_cast<long>(FLAGS_jobs), 1, 64, "e.g. 2");
   RequireInRange("threads_per_job", static_cast<long>(FLAGS_threads_per_job), 0, 1024,
                  "0 = the cores divided by --jobs");
-  std::string optimizer = FLAGS_ergo_optimize;
-  if (optimizer.empty()) {
-    std::error_code error;
-    const fs::path self = fs::read_symlink("/proc/self/exe", error);
-    optimizer = (self.parent_path() / "ergo_optimize").string();
-  }
-  if (!fs::is_regular_file(optimizer))
-    throw InputError("--ergo_optimize", "", "'" + optimizer + "' is not there",
-                     "build ergo_optimize, or give its path");
-  const fs::path dir = fs::absolute(FLAGS_out);
-  std::error_code error;
-  fs::create_directories(dir / "cases", error);
-  if (error)
-    throw InputError("--out", "", "'" + dir.string() + "' cannot be created: " + error.message(),
-                     "give a writable folder");
-  const int cores = std::max(1u, std::thread::hardware_concurrency());
-  const int threads =
-      FLAGS_threads_per_job > 0 ? FLAGS_threads_per_job : std::max(1, cores / FLAGS_jobs);
+  const std::string optimizer =
+      FLAGS_ergo_optimize.empty() ? OptimizerBesideThisProgram() : FLAGS_ergo_optimize;
+  const CaseRunner runner(FLAGS_out, optimizer, FLAGS_jobs, FLAGS_threads_per_job);
+  const fs::path dir = runner.dir();
 
   const std::vector<SweepCase> cases = SweepCases(arguments.axes);
-  std::vector<CaseOutcome> outcomes(cases.size());
-  std::vector<size_t> pending;
-  for (size_t i = 0; i < cases.size(); ++i) {
-    outcomes[i].plan = &cases[i];
-    if (Finished(dir / "cases" / cases[i].name)) {
-      outcomes[i].finished = outcomes[i].kept = true;
-    } else {
-      pending.push_back(i);
-    }
+  std::vector<ToolCase> runs;
+  for (const SweepCase& plan : cases) {
+    ToolCase run{plan.name, {}};
+    if (!arguments.flagfile.empty()) run.arguments.push_back("--flagfile=" + arguments.flagfile);
+    run.arguments.insert(run.arguments.end(), arguments.case_flags.begin(),
+                         arguments.case_flags.end());
+    for (const auto& [flag, value] : plan.flags) run.arguments.push_back("--" + flag + "=" + value);
+    runs.push_back(std::move(run));
   }
-  std::cout << "ergo_sweep: " << cases.size() << " cases (" << cases.size() - pending.size()
-            << " finished before, kept), " << pending.size() << " to run, " << FLAGS_jobs
-            << " at a time with --threads=" << threads << "\n";
-
+  std::cout << "ergo_sweep: ";
   StopOnSignals signals;
-  const auto begin = std::chrono::steady_clock::now();
-  std::atomic<size_t> next{0};
-  std::atomic<int> done{0};
-  std::mutex print;
-  auto worker = [&]() {
-    for (size_t k; (k = next++) < pending.size() && !StopOnSignals::stopped();) {
-      CaseOutcome& outcome = outcomes[pending[k]];
-      const SweepCase& plan = *outcome.plan;
-      const fs::path case_dir = dir / "cases" / plan.name;
-      std::vector<std::string> command = {optimizer};
-      if (!arguments.flagfile.empty()) command.push_back("--flagfile=" + arguments.flagfile);
-      command.insert(command.end(), arguments.case_flags.begin(), arguments.case_flags.end());
-      for (const auto& [flag, value] : plan.flags) command.push_back("--" + flag + "=" + value);
-      command.push_back("--threads=" + std::to_string(threads));
-      command.push_back("--out=" + case_dir.string());
-      ChildOptions options;
-      options.output = (dir / "cases" / (plan.name + ".log")).string();
-      const auto start = std::chrono::steady_clock::now();
-      const ChildProcessResult run = RunChildProcess(command, options);
-      outcome.seconds = SecondsSince(start);
-      outcome.finished = run.ok() && Finished(case_dir);
-      if (!outcome.finished) {
-        outcome.failure = "ergo_optimize " + run.Describe();
-        const std::string tail = LogTail(options.output, 2);
-        if (!tail.empty()) outcome.failure += ": " + tail;
-        outcome.failure += " (log: cases/" + plan.name + ".log)";
-      }
-      std::lock_guard<std::mutex> lock(print);
-      std::cout << "[" << ++done << "/" << pending.size() << "] " << std::fixed
-                << std::setprecision(1) << SecondsSince(begin) << " s  " << plan.name << ": "
-                << (outcome.finished ? "finished in " + Number(outcome.seconds, 3) + " s"
-                                     : outcome.failure)
-                << "\n";
-      std::cout.unsetf(std::ios::floatfield);
-      std::cout.flush();
-    }
-  };
-  std::vector<std::thread> workers;
-  for (int j = 0; j < FLAGS_jobs; ++j) workers.emplace_back(worker);
-  for (std::thread& w : workers) w.join();
-
-  for (CaseOutcome& outcome : outcomes) {
-    if (!outcome.finished) {
-      if (outcome.failure.empty()) outcome.failure = "not run (the sweep was stopped)";
-      continue;
-    }
-    try {
-      outcome.summary =
-          ReadJsonFile((dir / "cases" / outcome.plan->name / "summary.json").string());
-    } catch (const InputError& e) {
-      outcome.finished = false;
-      outcome.failure = e.what();
-    }
-  }
+  const std::vector<CaseOutcome> ran = runner.Run(runs);
+  std::vector<SweepOutcome> outcomes(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) outcomes[i] = {&cases[i], ran[i]};
   WriteReports(dir, arguments.axes, outcomes);
   if (FLAGS_plot) Plot(dir);
   const long failed = std::count_if(outcomes.begin(), outcomes.end(),
-                                    [](const CaseOutcome& o) { return !o.finished; });
+                                    [](const SweepOutcome& o) { return !o.run.finished; });
   std::cout << "ergo_sweep: " << cases.size() - failed << " of " << cases.size()
             << " cases finished; wrote " << (dir / "sweep.csv").string() << ", sweep.md"
             << (FLAGS_plot ? " and the pictures" : "") << "\n";
