@@ -313,6 +313,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     search.max_step = free_fall_max_step;
     search.max_evaluations = options_.max_line_search_evaluations;
     search.noise = 1e-12 * (std::abs(energy0) + energy_scale);
+    search.interpolate = options_.interpolated_line_search;
     const GoldenSectionResult found = GoldenSectionSearch(phi, slope, search);
     result.line_search_seconds += SecondsSince(start_search);
     result.line_search_trials += found.evaluations;

@@ -48,6 +48,10 @@ struct EquilibriumOptions {
   // search's expansion).
   double free_fall_mass_scale = 1e3;
   int max_line_search_evaluations = 30;
+  // Line search: when the full Newton step fails the Armijo test, try the quadratic model's
+  // step first and keep it if it decreases enough (GoldenSectionOptions::interpolate);
+  // false = the paper's golden-section minimisation to 1 % of the step at every such step.
+  bool interpolated_line_search = false;
   // A Newton step moving any vertex farther than this fraction of the body's size is
   // shortened first (a body balanced on a point has a nearly free tipping mode).
   double max_step_fraction = 0.05;

@@ -1,5 +1,6 @@
 #include "ergo/equilibrium/golden_section.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -55,12 +56,20 @@ GoldenSectionResult GoldenSectionSearch(const std::function<double(double)>& phi
     keep_best(c, fc);
     if (fc < fb) return result;  // still decreasing at the cap: take the farthest step
   } else {
-    // φ(1) is too high: the minimiser lies in (0, 1). Seed the interior point.
+    // φ(1) is too high: the minimiser lies in (0, 1). Seed the interior point: the
+    // quadratic model's minimiser, accepted at once if it decreases enough, or 1/golden.
     c = 1.0;
     fc = at_one;
     b = 1.0 / kGolden;
+    if (options.interpolate && std::isfinite(at_one)) {
+      const double curvature = at_one - slope;  // φ ≈ slope·η + curvature·η² on [0, 1]
+      b = curvature > 0 ? std::clamp(-slope / (2 * curvature), 0.1, 0.5) : 0.5;
+    } else if (options.interpolate) {
+      b = 0.5;  // φ(1) undefined (an inverted element): halve
+    }
     fb = evaluate(b);
     keep_best(b, fb);
+    if (options.interpolate && fb <= options.armijo * b * slope) return result;
     // Shrink until an interior point beats φ(0) = 0 (keeps the bracket valid).
     while (!(fb < fa) && result.evaluations < options.max_evaluations) {
       c = b, fc = fb;

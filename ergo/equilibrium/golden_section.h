@@ -15,6 +15,11 @@ struct GoldenSectionOptions {
   double relative_width = 1e-2;  // stop when the bracket is this narrow relative to η
   // |φ| at or below this is indistinguishable from round-off in E.
   double noise = 0.0;
+  // When φ(1) fails the Armijo test, first try the minimiser of the quadratic through
+  // φ(0) = 0, φ'(0) and φ(1) (clamped to [0.1, 0.5]) and accept it if it passes Armijo;
+  // only otherwise bracket and reduce by golden sections. One or two trials per Newton step
+  // instead of about ten (EquilibriumOptions::interpolated_line_search).
+  bool interpolate = false;
 };
 
 struct GoldenSectionResult {

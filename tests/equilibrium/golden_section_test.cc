@@ -31,6 +31,35 @@ TEST(Equilibrium, GoldenSectionFindsTheMinimiserInsideTheUnitInterval) {
   EXPECT_LT(r.value, 0);
 }
 
+TEST(Equilibrium, InterpolatedLineSearchTakesTheQuadraticsMinimiserInTwoTrials) {
+  // φ(η) = (η − 0.3)² − 0.09 is its own quadratic model: φ(1) = 0.4, φ'(0) = −0.6 give
+  // η = 0.6 / (2·(0.4 + 0.6)) = 0.3 exactly, which passes Armijo.
+  auto phi = [](double eta) { return (eta - 0.3) * (eta - 0.3) - 0.09; };
+  GoldenSectionOptions options;
+  options.interpolate = true;
+  const GoldenSectionResult r = GoldenSectionSearch(phi, -0.6, options);
+  EXPECT_EQ(r.evaluations, 2);
+  EXPECT_NEAR(r.step, 0.3, 1e-15);
+  EXPECT_NEAR(r.value, -0.09, 1e-15);
+}
+
+TEST(Equilibrium, InterpolatedLineSearchFallsBackToGoldenSectionsWhenTheModelFails) {
+  // A stiff wall at η = 0.05 behind a linear decrease: the quadratic's step (clamped at
+  // 0.1) lands beyond the wall, so the search shrinks and reduces as without the model.
+  auto phi = [](double eta) { return eta < 0.05 ? -eta : -0.05 + 1e6 * (eta - 0.05); };
+  GoldenSectionOptions options;
+  options.interpolate = true;
+  options.max_evaluations = 60;
+  const GoldenSectionResult r = GoldenSectionSearch(phi, -1.0, options);
+  EXPECT_GT(r.evaluations, 2);
+  EXPECT_NEAR(r.step, 0.05, 1e-3);  // the reduction stops at a bracket 1 % of the step wide
+  // An undefined φ(1) (an inverted element) halves the step instead.
+  auto undefined = [](double eta) { return eta > 0.6 ? NAN : eta * eta - eta; };
+  const GoldenSectionResult h = GoldenSectionSearch(undefined, -1.0, options);
+  EXPECT_EQ(h.evaluations, 2);
+  EXPECT_EQ(h.step, 0.5);
+}
+
 TEST(Equilibrium, GoldenSectionShrinksPastAnInfiniteTrial) {
   // Beyond η = 0.05 the energy is undefined (an inverted element): the search must shrink.
   auto phi = [](double eta) { return eta > 0.05 ? NAN : -eta; };

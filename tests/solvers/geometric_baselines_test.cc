@@ -115,9 +115,11 @@ TEST(SolversBaselines, TheSupportRisesTowardsABallAsFarAsItsSmoothnessAllows) {
     // Without smoothness the fit meets every target (the least squares is then separable);
     // more smoothness trades misfit for a flatter support.
     const BaselineDesign exact = design_with(1e-6);
-    for (Eigen::Index v = 0; v < d.size(); ++v)
-      if (exact.fit.weight[v] > 0)
+    for (Eigen::Index v = 0; v < d.size(); ++v) {
+      if (exact.fit.weight[v] > 0) {
         EXPECT_NEAR(exact.fit.displacement[v], exact.fit.target[v], 1e-6) << v;
+      }
+    }
     EXPECT_LT(design_with(0.1).fit.rms_misfit, design_with(10).fit.rms_misfit);
     // The design space reproduces the fitted positions (DesignFor is exact for the filter).
     const TriMesh designed = problem.SupportAt(design.x);

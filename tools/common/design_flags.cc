@@ -34,6 +34,10 @@ DEFINE_int32(robust_placements, 1,
              "equilibrium and adjoint, in parallel threads");
 DEFINE_double(robust_shift_mm, 3,
               "--robust_placements: the shift of the off-centre placements, mm");
+DEFINE_string(line_search, "golden",
+              "the equilibrium's Newton line search when the full step fails Armijo: golden "
+              "(the paper's golden-section minimisation) or interpolated (the quadratic "
+              "model's step first, golden sections only if it fails)");
 DEFINE_string(placement, "followed",
               "where the optimiser's evaluations start their equilibria: followed (warm from the "
               "nearest design evaluated before, the paper's; a path starts placed afresh and "
@@ -89,6 +93,10 @@ void ApplyDesignFlags(Scenario* scenario) {
     throw InputError("--placement", "", "'" + FLAGS_placement + "' is unknown",
                      "use fresh, anchored or followed");
   }
+  if (FLAGS_line_search != "golden" && FLAGS_line_search != "interpolated")
+    throw InputError("--line_search", "", "'" + FLAGS_line_search + "' is unknown",
+                     "use golden or interpolated");
+  design.equilibrium.interpolated_line_search = FLAGS_line_search == "interpolated";
   design.equilibrium.contact_support_springs = FLAGS_support_springs;
   design.pressure.exponent = FLAGS_exponent;
   design.pressure.smoothing = FLAGS_pressure_smoothing;

@@ -174,7 +174,9 @@ std::string Reproduction(const PaperPlan& plan, const std::vector<PaperTable>& t
   double run_seconds = 0;
   int kept = 0, failed = 0;
   for (const CaseOutcome& o : outcomes) {
-    run_seconds += o.seconds;
+    // Each run's own wall time (summary.json), also for runs kept from an earlier invocation.
+    const Json* wall = o.finished ? FindMember(o.summary, "wall_s") : nullptr;
+    run_seconds += wall && wall->is_number() ? wall->get<double>() : o.seconds;
     kept += o.kept ? 1 : 0;
     failed += o.finished ? 0 : 1;
   }
@@ -184,8 +186,9 @@ std::string Reproduction(const PaperPlan& plan, const std::vector<PaperTable>& t
      << std::thread::hardware_concurrency() << " cores: " << plan.runs.size()
      << " ergo_optimize runs (" << kept << " kept from an earlier run of the same folder, "
      << failed << " failed), " << FLAGS_jobs << " at a time with --threads=" << threads
-     << "; this command's wall time " << static_cast<long>(wall_seconds + 0.5)
-     << " s, the runs' own times sum to " << static_cast<long>(run_seconds + 0.5) << " s.\n\n"
+     << "; this invocation's wall time " << static_cast<long>(wall_seconds + 0.5)
+     << " s, the runs' own optimisation times (summary.json wall_s) sum to "
+     << static_cast<long>(run_seconds + 0.5) << " s.\n\n"
      << "Every run: the scene's flagfile (data/<scene>.flags) at --preset="
      << PaperPresetName(s.preset) << ", --max_evals=" << s.max_evals
      << ", --robust_placements=" << s.robust_placements
