@@ -43,10 +43,10 @@ std::string Seconds(double seconds) {
 
 }  // namespace
 
-std::string OptimizerBesideThisProgram() {
+std::string ToolBesideThisProgram(const std::string& name) {
   std::error_code error;
   const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  return (self.parent_path() / "ergo_optimize").string();
+  return (self.parent_path() / name).string();
 }
 
 bool CaseFinished(const fs::path& case_dir) {

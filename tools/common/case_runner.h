@@ -5,7 +5,7 @@
 // A failing case is reported (exit status and the log's last lines) and the others go on;
 // SIGINT / SIGTERM (StopOnSignals, held by the caller) stop starting new cases.
 //
-//   CaseRunner runner(dir, OptimizerBesideThisProgram(), /*jobs=*/2, /*threads=*/0);
+//   CaseRunner runner(dir, ToolBesideThisProgram("ergo_optimize"), /*jobs=*/2, /*threads=*/0);
 //   std::vector<CaseOutcome> outcomes = runner.Run(cases);   // in the order of `cases`
 #pragma once
 
@@ -30,8 +30,9 @@ struct CaseOutcome {
   Json summary;           // the case's summary.json when finished
 };
 
-// The ergo_optimize in the folder of the running program (the build's bin/, or the install's).
-std::string OptimizerBesideThisProgram();
+// The program `name` (e.g. "ergo_optimize") in the folder of the running program (the
+// build's bin/, or the install's).
+std::string ToolBesideThisProgram(const std::string& name);
 
 // True if DIR holds a readable summary.json of a run that was not interrupted.
 bool CaseFinished(const std::filesystem::path& case_dir);

@@ -89,11 +89,9 @@ PaperSettings Settings(const std::vector<std::string>& extra) {
   return settings;
 }
 
+// The program a flag names, or the one beside ergo_paper.
 std::string Program(const std::string& flag_value, const std::string& name) {
-  if (!flag_value.empty()) return flag_value;
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  return (self.parent_path() / name).string();
+  return flag_value.empty() ? ToolBesideThisProgram(name) : flag_value;
 }
 
 // Fig. 5 by ergo_bump, into DIR/bump_exponents.csv (kept when a run before wrote it).

@@ -221,7 +221,7 @@ int Run(const SweepArguments& arguments) {
   RequireInRange("threads_per_job", static_cast<long>(FLAGS_threads_per_job), 0, 1024,
                  "0 = the cores divided by --jobs");
   const std::string optimizer =
-      FLAGS_ergo_optimize.empty() ? OptimizerBesideThisProgram() : FLAGS_ergo_optimize;
+      FLAGS_ergo_optimize.empty() ? ToolBesideThisProgram("ergo_optimize") : FLAGS_ergo_optimize;
   const CaseRunner runner(FLAGS_out, optimizer, FLAGS_jobs, FLAGS_threads_per_job);
   const fs::path dir = runner.dir();
 
