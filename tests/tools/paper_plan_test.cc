@@ -58,7 +58,7 @@ TEST(ToolsPaperPlan, RunsGetTheirSceneFlagfileThePresetAndTheirOwnFlags) {
   EXPECT_EQ(a.front(), "--flagfile=/d/mouse.flags");  // first, so every later flag overrides it
   EXPECT_TRUE(Has(a, "--preset=paper"));
   EXPECT_TRUE(Has(a, "--max_evals=20"));
-  EXPECT_TRUE(Has(a, "--placement_checks=true"));
+  EXPECT_TRUE(Has(a, "--placement_checks=false"));
   EXPECT_TRUE(Has(a, "--parameterization=normal"));
   EXPECT_TRUE(Has(a, "--gamma=auto"));
   EXPECT_TRUE(Has(a, "--gamma_power=-1"));
@@ -86,12 +86,12 @@ TEST(ToolsPaperPlan, RunsGetTheirSceneFlagfileThePresetAndTheirOwnFlags) {
   EXPECT_TRUE(Has(from.Arguments(settings, "f"), "--start_designer=sit-and-relax"));
 }
 
-TEST(ToolsPaperPlan, PresetsDifferInResolutionBudgetAndChecks) {
+TEST(ToolsPaperPlan, PresetsDifferInResolutionAndBudget) {
   const PaperSettings quick = DefaultPaperSettings(PaperPreset::kQuick);
   const PaperSettings paper = DefaultPaperSettings(PaperPreset::kPaper);
   EXPECT_LT(quick.max_evals, paper.max_evals);
-  EXPECT_FALSE(quick.placement_checks);
-  EXPECT_TRUE(paper.placement_checks);
+  EXPECT_FALSE(quick.placement_checks);  // the tables score the centred placement
+  EXPECT_FALSE(paper.placement_checks);
   EXPECT_EQ(ParsePaperPreset("quick"), PaperPreset::kQuick);
   EXPECT_EQ(PaperPresetName(ParsePaperPreset("paper")), "paper");
 }

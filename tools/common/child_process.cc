@@ -113,7 +113,8 @@ std::string ToolScriptPath(const std::string& name) {
 
 std::string DataFilePath(const std::string& name) {
   const std::string installed = InstalledFile("data", name);
-  return installed.empty() ? std::string(ERGO_TOOLS_DIR) + "/../data/" + name : installed;
+  if (!installed.empty()) return installed;
+  return (std::filesystem::path(ERGO_TOOLS_DIR) / ".." / "data" / name).lexically_normal().string();
 }
 
 std::string FindPythonWithMatplotlib(const std::string& preferred) {

@@ -30,8 +30,8 @@ struct PaperSettings {
 };
 
 // The preset's defaults: quick = the scenes' quick meshes, 8 evaluations, one placement, no
-// placement checks (inside a test's budget: about 3 minutes on 2 cores); paper = the
-// paper-resolution meshes, 20 evaluations, placement checks on.
+// placement checks (inside a test's budget: about 4 minutes on 2 cores); paper = the
+// paper-resolution meshes, 20 evaluations, no placement checks either.
 PaperSettings DefaultPaperSettings(PaperPreset preset);
 
 struct PaperRun {
