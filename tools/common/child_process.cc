@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -125,6 +126,23 @@ std::string FindPythonWithMatplotlib(const std::string& preferred) {
     if (RunChildProcess({python, "-c", "import matplotlib"}, /*quiet=*/true).ok()) return python;
   }
   return "";
+}
+
+bool RunPictureScript(const std::string& tool, const std::string& script, const std::string& dir) {
+  const std::string python = FindPythonWithMatplotlib();
+  if (python.empty()) {
+    std::cerr << tool
+              << ": warning: pictures not written: no python3 with matplotlib found "
+                 "(Debian: apt-get install python3-matplotlib)\n";
+    return false;
+  }
+  // An argument vector, never a shell: the folder may hold any character.
+  const std::vector<std::string> command = {python, ToolScriptPath(script), dir};
+  const ChildProcessResult plotted = RunChildProcess(command);
+  if (!plotted.ok())
+    std::cerr << tool << ": warning: pictures not written: " << CommandLineForDisplay(command)
+              << " " << plotted.Describe() << "\n";
+  return plotted.ok();
 }
 
 }  // namespace ergo

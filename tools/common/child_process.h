@@ -46,6 +46,12 @@ std::string FindPythonWithMatplotlib(const std::string& preferred = "");
 // tree the tool was built from.
 std::string ToolScriptPath(const std::string& name);
 
+// Runs the picture script `script` (ToolScriptPath) on `dir` with the first Python that has
+// matplotlib. A missing matplotlib or a failing script is a warning on stderr prefixed by
+// `tool` ("ergo_sweep: warning: ..."), never an error: the numbers are written already.
+// Returns whether the pictures were written.
+bool RunPictureScript(const std::string& tool, const std::string& script, const std::string& dir);
+
 // A file shipped with ergo's data (e.g. "chair.flags", a scene's flagfile): in
 // <prefix>/share/ergo/data/ beside an installed tool when it is there, else in the source
 // tree's data/.

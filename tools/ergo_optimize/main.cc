@@ -193,22 +193,9 @@ Eigen::VectorXd PostSmooth(const DesignProblem& problem, const Eigen::VectorXd& 
   return problem.parameterization().DesignFor(smoothed.vertices);
 }
 
-// Runs the plotting script on the written outputs; a missing matplotlib or an interrupted
-// plot is a warning, never a failure of the run.
-void Plot(const std::string& dir) {
-  const std::string python = FindPythonWithMatplotlib();
-  if (python.empty()) {
-    std::cerr << "warning: pictures not written: no python3 with matplotlib found (Debian: "
-                 "apt-get install python3-matplotlib)\n";
-    return;
-  }
-  // An argument vector, never a shell: --out may hold any character.
-  const std::vector<std::string> command = {python, ToolScriptPath("plot_results.py"), dir};
-  const ChildProcessResult plotted = RunChildProcess(command);
-  if (!plotted.ok())
-    std::cerr << "warning: pictures not written: " << CommandLineForDisplay(command) << " "
-              << plotted.Describe() << "\n";
-}
+// The pictures of the written outputs (tools/plot_results.py); a missing matplotlib or an
+// interrupted plot is a warning, never a failure of the run.
+void Plot(const std::string& dir) { RunPictureScript("ergo_optimize", "plot_results.py", dir); }
 
 int Run() {
   ValidateRunFlags();
@@ -332,11 +319,12 @@ int Run() {
   // Where the optimiser starts: x₀, or a baseline's design (scored against x₀ all the same).
   Eigen::VectorXd x_start = x0;
   double phi_start = phi0_objective;
+  if (FLAGS_designer == "ergo" && FLAGS_start_designer != "none")
+    summary.start = FLAGS_start_designer;  // also after a resume (its score is then not known)
   if (FLAGS_designer == "ergo" && FLAGS_start_designer != "none" && FLAGS_resume.empty()) {
     const BaselineDesign design = Baseline(FLAGS_start_designer, problem, scenario.start);
     x_start = design.x;
     phi_start = rounds_problem.fresh_score(x_start, nullptr);
-    summary.start = FLAGS_start_designer;
     summary.start_score = phi_start;
     std::cout << "start: " << design.Describe() << "; its objective " << phi_start << " ("
               << phi_start / phi0_objective << " of the initial design's)\n";

@@ -142,19 +142,7 @@ Json FigureManifest(const PaperPlan& plan, const CaseRunner& runner,
   return manifest;
 }
 
-void Plot(const fs::path& dir) {
-  const std::string python = FindPythonWithMatplotlib();
-  if (python.empty()) {
-    std::cerr << "ergo_paper: warning: no python3 with matplotlib (Debian: apt-get install "
-                 "python3-matplotlib); pictures not written\n";
-    return;
-  }
-  const std::vector<std::string> command = {python, ToolScriptPath("plot_paper.py"), dir.string()};
-  const ChildProcessResult plotted = RunChildProcess(command);
-  if (!plotted.ok())
-    std::cerr << "ergo_paper: warning: pictures not written: " << CommandLineForDisplay(command)
-              << " " << plotted.Describe() << "\n";
-}
+void Plot(const fs::path& dir) { RunPictureScript("ergo_paper", "plot_paper.py", dir.string()); }
 
 std::string Today() {
   const std::time_t now = std::time(nullptr);

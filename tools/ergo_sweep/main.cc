@@ -200,19 +200,7 @@ void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
   });
 }
 
-void Plot(const fs::path& dir) {
-  const std::string python = FindPythonWithMatplotlib();
-  if (python.empty()) {
-    std::cerr << "ergo_sweep: warning: no python3 with matplotlib (Debian: apt-get install "
-                 "python3-matplotlib); pictures not written\n";
-    return;
-  }
-  const std::vector<std::string> command = {python, ToolScriptPath("plot_sweep.py"), dir.string()};
-  const ChildProcessResult plotted = RunChildProcess(command);
-  if (!plotted.ok())
-    std::cerr << "ergo_sweep: warning: pictures not written: " << CommandLineForDisplay(command)
-              << " " << plotted.Describe() << "\n";
-}
+void Plot(const fs::path& dir) { RunPictureScript("ergo_sweep", "plot_sweep.py", dir.string()); }
 
 int Run(const SweepArguments& arguments) {
   ValidateAxes(arguments.axes);
