@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include <glog/logging.h>
@@ -22,6 +23,8 @@ bool ParsePopulationAggregate(const std::string& text, PopulationAggregate* aggr
     *aggregate = PopulationAggregate::kMeanStd;
   else if (text == "worst")
     *aggregate = PopulationAggregate::kWorst;
+  else if (text == "cvar")
+    *aggregate = PopulationAggregate::kCvar;
   else
     return false;
   return true;
@@ -35,6 +38,8 @@ std::string PopulationAggregateName(PopulationAggregate aggregate) {
       return "meanstd";
     case PopulationAggregate::kWorst:
       return "worst";
+    case PopulationAggregate::kCvar:
+      return "cvar";
   }
   return "?";
 }
@@ -71,42 +76,155 @@ double PopulationScore(const std::vector<double>& r, const std::vector<double>& 
         for (size_t b = 0; b < n; ++b) (*dF_dr)[b] = terms[b] / sum;
       return top + t * std::log(sum);
     }
+    case PopulationAggregate::kCvar: {
+      const double tail = 1.0 - options.cvar_alpha;
+      std::vector<size_t> order(n);
+      std::iota(order.begin(), order.end(), size_t{0});
+      std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return r[a] > r[b]; });
+      double taken = 0, value = 0;
+      for (size_t b : order) {
+        const double take = std::min(w[b], tail - taken);
+        if (!(take > 0)) break;
+        value += take * r[b];
+        if (dF_dr) (*dF_dr)[b] = take / tail;
+        taken += take;
+      }
+      return value / tail;
+    }
   }
   return mean;
 }
 
 PopulationObjective::PopulationObjective(std::vector<PopulationMember> members,
-                                         const PopulationOptions& options)
-    : members_(std::move(members)), options_(options) {
+                                         const PopulationOptions& options,
+                                         std::unique_ptr<PopulationExchange> exchange)
+    : members_(std::move(members)), exchange_(std::move(exchange)), options_(options) {
   CHECK(!members_.empty());
   double total = 0;
+  const Objective& first = local();
   for (const PopulationMember& m : members_) {
-    CHECK(m.objective) << m.name;
-    CHECK_EQ(m.objective->NumParameters(), members_.front().objective->NumParameters()) << m.name;
+    CHECK(m.objective || exchange_) << m.name << ": evaluated nowhere";
+    if (m.objective) CHECK_EQ(m.objective->NumParameters(), first.NumParameters()) << m.name;
     CHECK(m.weight > 0 && m.scale > 0) << m.name;
     total += m.weight;
   }
   for (const PopulationMember& m : members_) weights_.push_back(m.weight / total);
   CHECK(options_.temperature > 0);
+  CHECK(options_.cvar_alpha >= 0 && options_.cvar_alpha < 1);
 }
 
 PopulationObjective::PopulationObjective(const PopulationObjective& other)
-    : weights_(other.weights_), options_(other.options_), last_scores_(other.last_scores_) {
+    : exchange_(other.exchange_ ? other.exchange_->Clone() : nullptr),
+      weights_(other.weights_),
+      options_(other.options_),
+      last_scores_(other.last_scores_),
+      last_values_(other.last_values_) {
   for (const PopulationMember& m : other.members_)
-    members_.push_back({m.name, m.weight, m.scale, m.objective->Clone()});
+    members_.push_back({m.name, m.weight, m.scale, m.objective ? m.objective->Clone() : nullptr});
+}
+
+const Objective& PopulationObjective::local() const {
+  for (const PopulationMember& m : members_)
+    if (m.objective) return *m.objective;
+  LOG(FATAL) << "a population objective with no member evaluated in this process";
+  return *members_.front().objective;
+}
+
+namespace {
+
+// Per body in the exchanged buffer: status (1 ok, 2 failed), φ, ζ, ψ, Newton iterations,
+// seconds, the timing entries, then the gradient.
+constexpr int kHeader = 6;
+constexpr size_t kMessageBytes = 480;
+
+int TimingEntries() {
+  int count = 0;
+  ForEachTimingEntry(
+      EvaluationTiming(), [&](const char*, double) { ++count; },
+      [&](const char*, long) { ++count; });
+  return count;
+}
+
+}  // namespace
+
+void PopulationObjective::Exchange(bool with_gradient, int num_parameters,
+                                   std::vector<ObjectiveValue>* values) {
+  const int count = size();
+  const int timing_entries = TimingEntries();
+  const size_t stride = kHeader + timing_entries + (with_gradient ? num_parameters : 0);
+  std::vector<double> buffer(stride * count, 0.0);
+  std::vector<std::string> names;  // the timing entries, in order
+  ForEachTimingEntry(
+      EvaluationTiming(), [&](const char* name, double) { names.push_back(name); },
+      [&](const char* name, long) { names.push_back(name); });
+  for (int b = 0; b < count; ++b) {
+    if (!members_[b].objective) continue;
+    const ObjectiveValue& v = (*values)[b];
+    double* slot = buffer.data() + stride * b;
+    slot[0] = v.ok ? 1 : 2;
+    slot[1] = v.phi, slot[2] = v.zeta, slot[3] = v.psi;
+    slot[4] = v.newton_iterations, slot[5] = v.seconds;
+    int k = kHeader;
+    ForEachTimingEntry(
+        v.timing, [&](const char*, double x) { slot[k++] = x; },
+        [&](const char*, long x) { slot[k++] = static_cast<double>(x); });
+    if (with_gradient && v.ok)
+      Eigen::Map<Eigen::VectorXd>(slot + kHeader + timing_entries, num_parameters) = v.gradient;
+  }
+  exchange_->SumDisjoint(&buffer);
+  bool any_failed = false;
+  for (int b = 0; b < count; ++b) {
+    const double* slot = buffer.data() + stride * b;
+    ObjectiveValue& v = (*values)[b];
+    if (members_[b].objective) {
+      any_failed = any_failed || !v.ok;
+      continue;
+    }
+    CHECK(slot[0] == 1 || slot[0] == 2) << "body " << members_[b].name << " evaluated nowhere";
+    v.ok = slot[0] == 1;
+    any_failed = any_failed || !v.ok;
+    v.phi = slot[1], v.zeta = slot[2], v.psi = slot[3];
+    v.newton_iterations = static_cast<int>(slot[4]), v.seconds = slot[5];
+    for (int k = 0; k < timing_entries; ++k) SetTimingEntry(names[k], slot[kHeader + k], &v.timing);
+    if (with_gradient && v.ok)
+      v.gradient =
+          Eigen::Map<const Eigen::VectorXd>(slot + kHeader + timing_entries, num_parameters);
+    v.message = v.ok ? "ok" : "";
+  }
+  if (!any_failed) return;  // every process knows this from the same sums
+  std::vector<unsigned char> bytes(kMessageBytes * count, 0);
+  for (int b = 0; b < count; ++b) {
+    if (!members_[b].objective || (*values)[b].ok) continue;
+    const std::string& message = (*values)[b].message;
+    std::copy_n(message.begin(), std::min(message.size(), kMessageBytes - 1),
+                bytes.begin() + static_cast<long>(kMessageBytes * b));
+  }
+  exchange_->MaxBytes(&bytes);
+  for (int b = 0; b < count; ++b) {
+    if (members_[b].objective || (*values)[b].ok) continue;
+    const char* text = reinterpret_cast<const char*>(bytes.data() + kMessageBytes * b);
+    (*values)[b].message = std::string(text, strnlen(text, kMessageBytes));
+  }
 }
 
 ObjectiveValue PopulationObjective::Evaluate(const Eigen::VectorXd& x, bool with_gradient) {
   const int count = size();
   std::vector<ObjectiveValue> values(static_cast<size_t>(count));
-  ForEachInParallel(count,
-                    [&](int b) { values[b] = members_[b].objective->Evaluate(x, with_gradient); });
+  std::vector<int> here;
+  for (int b = 0; b < count; ++b)
+    if (members_[b].objective) here.push_back(b);
+  ForEachInParallel(static_cast<int>(here.size()), [&](int i) {
+    values[here[i]] = members_[here[i]].objective->Evaluate(x, with_gradient);
+  });
+  if (exchange_) Exchange(with_gradient, static_cast<int>(x.size()), &values);
   ObjectiveValue out;
   for (const ObjectiveValue& v : values) {
     out.newton_iterations += v.newton_iterations;
     out.seconds = std::max(out.seconds, v.seconds);  // side by side: the slowest
     out.timing += v.timing;
   }
+  last_values_ = values;
+  for (ObjectiveValue& v : last_values_) v.gradient.resize(0);
   for (int b = 0; b < count; ++b) {
     if (!values[b].ok) {
       out.ok = false;
@@ -125,7 +243,7 @@ ObjectiveValue PopulationObjective::Evaluate(const Eigen::VectorXd& x, bool with
   if (with_gradient) {
     out.gradient = Eigen::VectorXd::Zero(x.size());
     for (int b = 0; b < count; ++b)
-      out.gradient += (dF_dr[b] / members_[b].scale) * values[b].gradient;
+      if (dF_dr[b] != 0) out.gradient += (dF_dr[b] / members_[b].scale) * values[b].gradient;
   }
   last_scores_ = r;
   out.ok = true;
@@ -138,11 +256,11 @@ std::unique_ptr<Objective> PopulationObjective::Clone() const {
 }
 
 double PopulationObjective::LargestMove(const Eigen::VectorXd& dx) const {
-  return members_.front().objective->LargestMove(dx);  // one design space for all
+  return local().LargestMove(dx);  // one design space for all
 }
 
 double PopulationObjective::BoxHalfWidthForMove(double move) const {
-  return members_.front().objective->BoxHalfWidthForMove(move);
+  return local().BoxHalfWidthForMove(move);
 }
 
 std::string PopulationObjective::Describe() const {

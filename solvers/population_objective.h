@@ -7,12 +7,20 @@
 // one by the size of its φ. The members are evaluated in parallel threads; each keeps its
 // own equilibria and adjoint, so the gradient is exact: ∇F = Σ_b (∂F/∂r_b) ∇φ_b / s_b.
 //
+// The members may live in several processes (MPI ranks): a member whose objective is null
+// is evaluated by another process, and the PopulationExchange brings its figures; every
+// process then computes the same F and ∇F from the same bits (population_exchange.h).
+//
 // Aggregates of the r_b (PopulationScore gives F and ∂F/∂r_b):
 //   mean      F = Σ w_b r_b
 //   meanstd   F = μ + k·σ_ε, μ = Σ w_b r_b, σ_ε = √(Σ w_b (r_b − μ)² + ε²) (ε = 1e-3 keeps
 //             F smooth where every body scores alike, as all do at the start: r_b = 1)
 //   worst     F = T·log Σ w_b exp(r_b / T), a smooth maximum (log-sum-exp; within T·log(1/w)
 //             of max r_b, → max r_b as T → 0); ∂F/∂r_b = w_b e^{r_b/T} / Σ w e^{r/T}
+//   cvar      F = CVaR_α: the weighted mean of the worst 1 − α of the population (by
+//             weight; the body at the boundary counts with the fraction that fits), so α = 0
+//             is the mean and α → 1 the worst body; piecewise linear in r, ∂F/∂r_b the
+//             body's share of the tail (exact where no two tail scores tie at the boundary)
 #pragma once
 
 #include <memory>
@@ -20,12 +28,13 @@
 #include <vector>
 
 #include "solvers/objective.h"
+#include "solvers/population_exchange.h"
 
 namespace ergo {
 
-enum class PopulationAggregate { kMean, kMeanStd, kWorst };
+enum class PopulationAggregate { kMean, kMeanStd, kWorst, kCvar };
 
-// Parses mean, meanstd or worst; false otherwise.
+// Parses mean, meanstd, worst or cvar; false otherwise.
 bool ParsePopulationAggregate(const std::string& text, PopulationAggregate* aggregate);
 std::string PopulationAggregateName(PopulationAggregate aggregate);
 
@@ -33,6 +42,7 @@ struct PopulationOptions {
   PopulationAggregate aggregate = PopulationAggregate::kMean;
   double std_weight = 1.0;    // k of meanstd
   double temperature = 0.05;  // T of worst, in units of r (5 % of a body's start score)
+  double cvar_alpha = 0.5;    // α of cvar, in [0, 1): the tail is the worst 1 − α by weight
 };
 
 // F of the normalised scores r (weights w, summing to 1) and, if dF_dr is given, ∂F/∂r_b.
@@ -41,18 +51,21 @@ double PopulationScore(const std::vector<double>& r, const std::vector<double>& 
 
 struct PopulationMember {
   std::string name;
-  double weight = 1;  // relative; normalised over the population
-  double scale = 1;   // s_b > 0: the body's score at the start design
-  std::unique_ptr<Objective> objective;
+  double weight = 1;                     // relative; normalised over the population
+  double scale = 1;                      // s_b > 0: the body's score at the start design
+  std::unique_ptr<Objective> objective;  // null: evaluated by another process
 };
 
 class PopulationObjective : public Objective {
  public:
-  // At least one member, all with the same NumParameters, positive weights and scales.
-  PopulationObjective(std::vector<PopulationMember> members, const PopulationOptions& options);
+  // At least one member with an objective, all of them with the same NumParameters; positive
+  // weights and scales. Members without one need `exchange` (the other processes hold them;
+  // every process lists the same members in the same order).
+  PopulationObjective(std::vector<PopulationMember> members, const PopulationOptions& options,
+                      std::unique_ptr<PopulationExchange> exchange = nullptr);
   PopulationObjective(const PopulationObjective& other);
 
-  int NumParameters() const override { return members_.front().objective->NumParameters(); }
+  int NumParameters() const override { return local().NumParameters(); }
   // F and ∇F; φ = F, ζ and ψ the weighted means of the members' r-scaled parts. Fails
   // (naming the body) if any member fails. The members' normalised scores r_b of this
   // evaluation are in last_scores().
@@ -60,19 +73,28 @@ class PopulationObjective : public Objective {
   std::unique_ptr<Objective> Clone() const override;
   double LargestMove(const Eigen::VectorXd& dx) const override;
   double BoxHalfWidthForMove(double move) const override;
-  double LengthScale() const override { return members_.front().objective->LengthScale(); }
+  double LengthScale() const override { return local().LengthScale(); }
   std::string Describe() const override;
 
   int size() const { return static_cast<int>(members_.size()); }
   const PopulationMember& member(int b) const { return members_[b]; }
   const std::vector<double>& weights() const { return weights_; }
   const std::vector<double>& last_scores() const { return last_scores_; }
+  // The members' own values of the last evaluation (all of them, also those of other
+  // processes; without gradients).
+  const std::vector<ObjectiveValue>& last_values() const { return last_values_; }
 
  private:
+  const Objective& local() const;  // the first member evaluated here
+  // Brings the other processes' members' values into `values` (see population_exchange.h).
+  void Exchange(bool with_gradient, int num_parameters, std::vector<ObjectiveValue>* values);
+
   std::vector<PopulationMember> members_;
+  std::unique_ptr<PopulationExchange> exchange_;
   std::vector<double> weights_;  // normalised
   PopulationOptions options_;
   std::vector<double> last_scores_;
+  std::vector<ObjectiveValue> last_values_;
 };
 
 }  // namespace ergo

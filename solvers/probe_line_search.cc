@@ -6,42 +6,12 @@
 #include <thread>
 #include <utility>
 
-#include <dlfcn.h>
 #include <glog/logging.h>
 #include <omp.h>
 
+#include "ergo/equilibrium/single_threaded_blas.h"
+
 namespace ergo {
-namespace {
-
-// While the probes run in parallel, a threaded BLAS under each probe's sparse Cholesky only
-// adds contention: OpenBLAS' pthread build serialises concurrent callers and spins its
-// workers (measured on 2 busy cores, 17 bump evaluations in 8 probe threads: 34 s with
-// OpenBLAS' threads, 2.4 s with one). Limits OpenBLAS to one thread for this scope if it
-// is the BLAS in the process (looked up at run time; no-op for any other BLAS).
-class SingleThreadedBlas {
- public:
-  SingleThreadedBlas() {
-    set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    auto get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    if (!set_ || !get) {
-      set_ = nullptr;
-      return;
-    }
-    previous_ = get();
-    set_(1);
-  }
-  ~SingleThreadedBlas() {
-    if (set_) set_(previous_);
-  }
-  SingleThreadedBlas(const SingleThreadedBlas&) = delete;
-  SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
-
- private:
-  void (*set_)(int) = nullptr;
-  int previous_ = 1;
-};
-
-}  // namespace
 
 ProbeLineSearch::ProbeLineSearch(ProbeOptions options)
     : options_(std::move(options)), last_accepted_(static_cast<int>(options_.moves.size()) / 2) {

@@ -1,5 +1,7 @@
 #include "ergo/design/placement_checks.h"
 
+#include "ergo/equilibrium/single_threaded_blas.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -59,6 +61,12 @@ void ForEachInParallel(int count, const std::function<void(int)>& task) {
     if (workers > 1) omp_set_num_threads(inner);
     for (int i = next++; i < count; i = next++) task(i);
   };
+  if (workers == 1) {
+    work();
+    return;
+  }
+  // The tasks' equilibria side by side: one BLAS thread each (single_threaded_blas.h).
+  const SingleThreadedBlas single_threaded_blas;
   std::vector<std::thread> threads;
   for (int w = 1; w < workers; ++w) threads.emplace_back(work);
   work();

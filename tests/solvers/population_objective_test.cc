@@ -7,12 +7,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
 #include <iostream>
+#include <mutex>
 #include <random>
+#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "problems/bump_scenario.h"
+#include "solvers/analytic_objectives.h"
 #include "solvers/design_objective.h"
 #include "tests/support/test_paths.h"
 
@@ -47,8 +51,20 @@ TEST(SolversPopulation, AggregatesHaveTheirHandComputedValuesAndPartials) {
   // A score far above the rest does not overflow (the log-sum-exp is shifted by the maximum).
   EXPECT_NEAR(PopulationScore({1, 500, 2}, w, worst, nullptr), 500 + 1e-3 * std::log(0.25), 1e-9);
 
+  // cvar, α = 0.5: the worst half by weight is 1.2 (w 0.25) and half of 0.8 (0.25 of 0.5).
+  PopulationOptions cvar = Options(PopulationAggregate::kCvar);
+  EXPECT_NEAR(PopulationScore(r, w, cvar, nullptr), (0.25 * 1.2 + 0.25 * 0.8) / 0.5, 1e-15);
+  std::vector<double> cvar_partials;
+  PopulationScore(r, w, cvar, &cvar_partials);
+  EXPECT_EQ(cvar_partials, (std::vector<double>{0.5, 0.5, 0.0}));
+  cvar.cvar_alpha = 0;  // the whole population: the mean
+  EXPECT_NEAR(PopulationScore(r, w, cvar, nullptr), 0.85, 1e-15);
+  cvar.cvar_alpha = 0.9;  // the worst 10 %: inside the worst body's weight
+  EXPECT_NEAR(PopulationScore(r, w, cvar, nullptr), 1.2, 1e-15);
+  cvar.cvar_alpha = 0.5;
+
   for (PopulationOptions options :
-       {Options(PopulationAggregate::kMean), meanstd, Options(PopulationAggregate::kWorst)}) {
+       {Options(PopulationAggregate::kMean), meanstd, Options(PopulationAggregate::kWorst), cvar}) {
     std::vector<double> partials;
     PopulationScore(r, w, options, &partials);
     for (size_t b = 0; b < r.size(); ++b) {
@@ -66,7 +82,9 @@ TEST(SolversPopulation, AggregatesHaveTheirHandComputedValuesAndPartials) {
   PopulationAggregate parsed;
   EXPECT_TRUE(ParsePopulationAggregate("worst", &parsed));
   EXPECT_EQ(parsed, PopulationAggregate::kWorst);
-  EXPECT_FALSE(ParsePopulationAggregate("cvar", &parsed));
+  EXPECT_TRUE(ParsePopulationAggregate("cvar", &parsed));
+  EXPECT_EQ(parsed, PopulationAggregate::kCvar);
+  EXPECT_FALSE(ParsePopulationAggregate("median", &parsed));
 }
 
 struct Ball {
@@ -129,9 +147,9 @@ TEST(SolversPopulation, ThreeBodiesShareOneDesignAndTheGradientMatchesDifference
   random.normalize();
   const std::vector<PopulationAggregate> aggregates =
       testing::SanitizedBuild() ? std::vector<PopulationAggregate>{PopulationAggregate::kMeanStd}
-                                : std::vector<PopulationAggregate>{PopulationAggregate::kMean,
-                                                                   PopulationAggregate::kMeanStd,
-                                                                   PopulationAggregate::kWorst};
+                                : std::vector<PopulationAggregate>{
+                                      PopulationAggregate::kMean, PopulationAggregate::kMeanStd,
+                                      PopulationAggregate::kWorst, PopulationAggregate::kCvar};
   for (PopulationAggregate aggregate : aggregates) {
     PopulationObjective objective = population(aggregate);
     EXPECT_DOUBLE_EQ(objective.weights()[1], 0.5);
@@ -160,6 +178,135 @@ TEST(SolversPopulation, ThreeBodiesShareOneDesignAndTheGradientMatchesDifference
       EXPECT_LT(best, 1e-4) << PopulationAggregateName(aggregate);
       std::cout << PopulationAggregateName(aggregate) << ": relative error " << best << "\n";
     }
+  }
+}
+
+// Two "processes" in one test: two threads, each with its own PopulationObjective, meeting
+// at every exchange (what MPI_Allreduce does between ranks).
+class Rendezvous {
+ public:
+  // Adds `mine` to the other party's buffer; both return the sum.
+  template <typename T, typename Combine>
+  void Meet(std::vector<T>* mine, Combine combine) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const long round = round_;
+    if (!waiting_) {
+      waiting_ = true;
+      first_.assign(reinterpret_cast<const unsigned char*>(mine->data()),
+                    reinterpret_cast<const unsigned char*>(mine->data() + mine->size()));
+      changed_.wait(lock, [&] { return round_ != round; });
+      mine->assign(reinterpret_cast<const T*>(result_.data()),
+                   reinterpret_cast<const T*>(result_.data() + result_.size()));
+      return;
+    }
+    const T* other = reinterpret_cast<const T*>(first_.data());
+    for (size_t i = 0; i < mine->size(); ++i) (*mine)[i] = combine(other[i], (*mine)[i]);
+    result_.assign(reinterpret_cast<const unsigned char*>(mine->data()),
+                   reinterpret_cast<const unsigned char*>(mine->data() + mine->size()));
+    waiting_ = false;
+    ++round_;
+    changed_.notify_all();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool waiting_ = false;
+  long round_ = 0;
+  std::vector<unsigned char> first_, result_;
+};
+
+class TestExchange : public PopulationExchange {
+ public:
+  explicit TestExchange(std::shared_ptr<Rendezvous> rendezvous) : rendezvous_(rendezvous) {}
+  void SumDisjoint(std::vector<double>* values) override {
+    rendezvous_->Meet(values, [](double a, double b) { return a + b; });
+  }
+  void MaxBytes(std::vector<unsigned char>* bytes) override {
+    rendezvous_->Meet(bytes, [](unsigned char a, unsigned char b) { return std::max(a, b); });
+  }
+  std::unique_ptr<PopulationExchange> Clone() const override {
+    return std::make_unique<TestExchange>(rendezvous_);
+  }
+
+ private:
+  std::shared_ptr<Rendezvous> rendezvous_;
+};
+
+// An objective whose evaluation fails, as a body whose equilibrium does not converge.
+class FailingObjective : public ExtendedRosenbrock {
+ public:
+  FailingObjective() : ExtendedRosenbrock(6) {}
+  ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override {
+    ObjectiveValue value = ExtendedRosenbrock::Evaluate(x, with_gradient);
+    value.ok = false;
+    value.message = "the equilibrium did not converge in 3 Newton iterations";
+    return value;
+  }
+  std::unique_ptr<Objective> Clone() const override { return std::make_unique<FailingObjective>(); }
+};
+
+// Bodies 0..count-1; `party` keeps the even (0) or odd (1) ones, -1 all of them.
+PopulationObjective Split(int party, int count, bool failing_third,
+                          std::shared_ptr<Rendezvous> rendezvous, PopulationAggregate aggregate) {
+  std::vector<PopulationMember> members;
+  for (int b = 0; b < count; ++b) {
+    std::unique_ptr<Objective> objective;
+    if (party < 0 || b % 2 == party) {
+      if (failing_third && b == 2)
+        objective = std::make_unique<FailingObjective>();
+      else
+        objective = std::make_unique<IllConditionedQuadratic>(6, 10.0 * (b + 1), b + 1);
+    }
+    members.push_back({"body-" + std::to_string(b), 1.0 + b, 0.5 + b, std::move(objective)});
+  }
+  return PopulationObjective(
+      std::move(members), Options(aggregate),
+      party < 0 ? nullptr : std::make_unique<TestExchange>(std::move(rendezvous)));
+}
+
+TEST(SolversPopulation, BodiesSplitOverTwoProcessesGiveTheSameBitsAsOne) {
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(6, -0.3, 0.7);
+  for (PopulationAggregate aggregate :
+       {PopulationAggregate::kMeanStd, PopulationAggregate::kCvar}) {
+    PopulationObjective whole = Split(-1, 5, false, nullptr, aggregate);
+    const ObjectiveValue expected = whole.Evaluate(x, true);
+    ASSERT_TRUE(expected.ok);
+    auto rendezvous = std::make_shared<Rendezvous>();
+    PopulationObjective even = Split(0, 5, false, rendezvous, aggregate);
+    PopulationObjective odd = Split(1, 5, false, rendezvous, aggregate);
+    // Copies take their own channel and keep their members: evaluated as the originals.
+    std::unique_ptr<Objective> even_copy = even.Clone(), odd_copy = odd.Clone();
+    ObjectiveValue on_even, on_odd, on_even_copy, on_odd_copy;
+    std::thread other([&] {
+      on_odd = odd.Evaluate(x, true);
+      on_odd_copy = odd_copy->Evaluate(x, true);
+    });
+    on_even = even.Evaluate(x, true);
+    on_even_copy = even_copy->Evaluate(x, true);
+    other.join();
+    for (const ObjectiveValue* v : {&on_even, &on_odd, &on_even_copy, &on_odd_copy}) {
+      ASSERT_TRUE(v->ok) << v->message;
+      EXPECT_EQ(v->phi, expected.phi);  // bit for bit: every slot is summed with zeros only
+      EXPECT_EQ(v->gradient, expected.gradient);
+    }
+    EXPECT_EQ(even.last_scores(), whole.last_scores());
+  }
+}
+
+TEST(SolversPopulation, ABodyFailingInOneProcessFailsTheEvaluationInEveryProcessNamingIt) {
+  auto rendezvous = std::make_shared<Rendezvous>();
+  PopulationObjective even = Split(0, 4, true, rendezvous, PopulationAggregate::kMean);
+  PopulationObjective odd = Split(1, 4, true, rendezvous, PopulationAggregate::kMean);
+  const Eigen::VectorXd x = Eigen::VectorXd::Constant(6, 0.1);
+  ObjectiveValue on_odd;
+  std::thread other([&] { on_odd = odd.Evaluate(x, true); });
+  ObjectiveValue on_even = even.Evaluate(x, true);
+  other.join();
+  // Body 2 lives with the even party; the odd one learns its name and its message.
+  for (const ObjectiveValue* v : {&on_even, &on_odd}) {
+    EXPECT_FALSE(v->ok);
+    EXPECT_EQ(v->message, "body body-2: the equilibrium did not converge in 3 Newton iterations");
   }
 }
 

@@ -38,6 +38,8 @@ DEFINE_string(line_search, "golden",
               "the equilibrium's Newton line search when the full step fails Armijo: golden "
               "(the paper's golden-section minimisation) or interpolated (the quadratic "
               "model's step first, golden sections only if it fails)");
+DEFINE_int32(max_newton_iterations, 100,
+             "the equilibrium's Newton iteration cap; a solve that reaches it has failed");
 DEFINE_string(placement, "followed",
               "where the optimiser's evaluations start their equilibria: followed (warm from the "
               "nearest design evaluated before, the paper's; a path starts placed afresh and "
@@ -97,6 +99,9 @@ void ApplyDesignFlags(Scenario* scenario) {
     throw InputError("--line_search", "", "'" + FLAGS_line_search + "' is unknown",
                      "use golden or interpolated");
   design.equilibrium.interpolated_line_search = FLAGS_line_search == "interpolated";
+  RequireInRange("max_newton_iterations", static_cast<long>(FLAGS_max_newton_iterations), 1, 100000,
+                 "e.g. 100");
+  design.equilibrium.max_iterations = FLAGS_max_newton_iterations;
   design.equilibrium.contact_support_springs = FLAGS_support_springs;
   design.pressure.exponent = FLAGS_exponent;
   design.pressure.smoothing = FLAGS_pressure_smoothing;

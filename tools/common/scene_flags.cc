@@ -79,6 +79,13 @@ DEFINE_double(shoe_lean_torque, 0,
               "shoe: torque about x on the foot's core, N m (> 0 leans forward onto the toes)");
 DEFINE_double(shoe_body_mass, 75, "shoe: the wearer's mass, kg");
 DEFINE_double(shoe_load_fraction, 0.5, "shoe: fraction of the wearer's weight on this foot");
+DEFINE_double(shoe_foot_length, 0.26,
+              "shoe: the generated foot's length, heel to longest toe, m (adults 0.23-0.29; the "
+              "sole is sized to the foot)");
+DEFINE_double(shoe_foot_breadth_scale, 1,
+              "shoe: the generated foot's breadth and height relative to a 0.26 m foot's");
+DEFINE_double(shoe_modulus_scale, 1,
+              "shoe: every region's tissue Young's modulus times this (a stiffer or softer foot)");
 DEFINE_double(mouse_hand_mass, 0.45, "mouse: mass of the hand, kg");
 
 namespace ergo {
@@ -205,6 +212,9 @@ void ValidateSceneFlags() {
   RequireInRange("shoe_lean_torque", FLAGS_shoe_lean_torque, -1e3, 1e3, "N m, e.g. 0");
   RequireInRange("shoe_body_mass", FLAGS_shoe_body_mass, 1, 500, "kg, e.g. 75");
   RequireInRange("shoe_load_fraction", FLAGS_shoe_load_fraction, 0, 1, "e.g. 0.5");
+  RequireInRange("shoe_foot_length", FLAGS_shoe_foot_length, 0.185, 0.335, "metres, e.g. 0.26");
+  RequireInRange("shoe_foot_breadth_scale", FLAGS_shoe_foot_breadth_scale, 0.65, 1.55, "e.g. 1");
+  RequireInRange("shoe_modulus_scale", FLAGS_shoe_modulus_scale, 0.05, 20, "e.g. 1.3");
   RequireInRange("mouse_hand_mass", FLAGS_mouse_hand_mass, 0.01, 10, "kg, e.g. 0.45");
 }
 
@@ -283,6 +293,11 @@ Scenario MakeShoeFromFlags() {
   o.lean_torque = FLAGS_shoe_lean_torque;
   o.body_mass = FLAGS_shoe_body_mass;
   o.load_fraction = FLAGS_shoe_load_fraction;
+  o.foot.length = FLAGS_shoe_foot_length;
+  o.foot.breadth_scale = FLAGS_shoe_foot_breadth_scale;
+  for (double* modulus : {&o.foot.heel_modulus, &o.foot.arch_modulus, &o.foot.ball_modulus,
+                          &o.foot.toe_modulus, &o.foot.dorsal_modulus})
+    *modulus *= FLAGS_shoe_modulus_scale;
   return BuildAndReport("shoe", o, MakeShoeScenario);
 }
 

@@ -36,11 +36,11 @@
 #include "tools/common/design_flags.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
+#include "tools/common/run_outputs.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
 #include "tools/common/vtu_flags.h"
 #include "tools/ergo_optimize/checkpoint.h"
-#include "tools/ergo_optimize/run_outputs.h"
 #include "tools/ergo_optimize/run_summary.h"
 
 DEFINE_string(

@@ -15,7 +15,7 @@
 #include "ergo/mesh/json.h"
 #include "problems/scenario.h"
 #include "solvers/optimizer.h"
-#include "tools/ergo_optimize/run_outputs.h"
+#include "tools/common/run_outputs.h"
 
 namespace ergo {
 

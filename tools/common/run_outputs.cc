@@ -1,4 +1,4 @@
-#include "tools/ergo_optimize/run_outputs.h"
+#include "tools/common/run_outputs.h"
 
 #include <cmath>
 #include <filesystem>
@@ -93,19 +93,30 @@ DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
   return ReportEvaluation(problem, x, problem.Evaluate(x, false));
 }
 
-void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
-                      const DesignReport& report, const Vertices& initial_support,
-                      VtuEncoding vtu_encoding) {
+void WriteDesignVtus(const std::string& dir, const std::string& tag, const LayeredBody& body,
+                     const DesignReport& report, const Vertices& initial_support,
+                     VtuEncoding vtu_encoding) {
   const std::filesystem::path out(dir);
   WriteDeformedBodyVtu((out / ("body_" + tag + ".vtu")).string(), body,
                        report.evaluation.equilibrium.state, report.pressures, vtu_encoding);
   WriteSupportVtu((out / ("support_" + tag + ".vtu")).string(), report.support, report.pressures,
                   initial_support, vtu_encoding);
+}
+
+void WriteSupportMeshes(const std::string& dir, const std::string& tag, const TriMesh& support) {
+  const std::filesystem::path out(dir);
   WriteOptions millimetres;
   millimetres.unit = LengthUnit::kMillimetre;
-  WriteTriMesh((out / ("support_" + tag + ".ply")).string(), report.support, millimetres);
+  WriteTriMesh((out / ("support_" + tag + ".ply")).string(), support, millimetres);
   millimetres.encoding = Encoding::kBinary;
-  WriteTriMesh((out / ("support_" + tag + ".stl")).string(), report.support, millimetres);
+  WriteTriMesh((out / ("support_" + tag + ".stl")).string(), support, millimetres);
+}
+
+void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
+                      const DesignReport& report, const Vertices& initial_support,
+                      VtuEncoding vtu_encoding) {
+  WriteDesignVtus(dir, tag, body, report, initial_support, vtu_encoding);
+  WriteSupportMeshes(dir, tag, report.support);
 }
 
 Json PlotData(const Scenario& scenario, const DesignReport& initial,

@@ -34,8 +34,14 @@ DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x);
 DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorXd& x,
                               DesignEvaluation evaluation);
 
-// DIR/body_TAG.vtu, DIR/support_TAG.vtu (displacement from `initial_support`; both in
-// `vtu_encoding`), DIR/support_TAG.ply and DIR/support_TAG.stl (binary, millimetres).
+// DIR/body_TAG.vtu and DIR/support_TAG.vtu (pressures; the support's displacement from
+// `initial_support`), in `vtu_encoding`.
+void WriteDesignVtus(const std::string& dir, const std::string& tag, const LayeredBody& body,
+                     const DesignReport& report, const Vertices& initial_support,
+                     VtuEncoding vtu_encoding);
+// DIR/support_TAG.ply and DIR/support_TAG.stl (binary), in millimetres.
+void WriteSupportMeshes(const std::string& dir, const std::string& tag, const TriMesh& support);
+// Both: the VTUs, then the support's PLY and print-ready STL.
 void WriteDesignFiles(const std::string& dir, const std::string& tag, const LayeredBody& body,
                       const DesignReport& report, const Vertices& initial_support,
                       VtuEncoding vtu_encoding);
