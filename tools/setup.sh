@@ -28,6 +28,8 @@ packages=(build-essential cmake pkg-config libeigen3-dev libceres-dev libsuitesp
 [ "$mode" = test ] && packages+=(python3-pytest python3-scipy)
 # The VTU test reads the binary files back with meshio (skipped without it).
 [ "$mode" = test ] && packages+=(python3-meshio)
+# ergo_population --mpi and its tests (mpirun -np 3): Open MPI.
+[ "$mode" = test ] && packages+=(openmpi-bin libopenmpi-dev)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||

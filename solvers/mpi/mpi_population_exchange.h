@@ -57,4 +57,7 @@ std::string FirstErrorOnAnyRank(MPI_Comm comm, const std::string& local_error);
 // `text` as rank `root` has it, on every rank.
 std::string BroadcastString(MPI_Comm comm, int root, const std::string& text);
 
+// Every rank's `text`, in rank order, on rank 0 (empty elsewhere).
+std::vector<std::string> GatherStrings(MPI_Comm comm, const std::string& text);
+
 }  // namespace ergo

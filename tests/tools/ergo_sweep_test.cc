@@ -24,10 +24,14 @@ struct Sweep {
 };
 
 // A bump case costs about a second: two evaluations, one placement, no checks or pictures.
-Sweep RunSweep(const fs::path& dir, const std::vector<std::string>& axes, bool plot) {
-  std::vector<std::string> command = {ERGO_BIN_DIR "/ergo_sweep", "--jobs=2",
-                                      "--out=" + dir.string(),
-                                      std::string("--plot=") + (plot ? "true" : "false")};
+Sweep RunSweep(const fs::path& dir, const std::vector<std::string>& axes, bool plot,
+               const std::vector<std::string>& launcher = {}) {
+  std::vector<std::string> command = launcher;
+  for (const char* part : {ERGO_BIN_DIR "/ergo_sweep", "--jobs=2"}) command.push_back(part);
+  if (!launcher.empty()) command.push_back("--mpi");
+  for (const std::string& part : std::vector<std::string>{
+           "--out=" + dir.string(), std::string("--plot=") + (plot ? "true" : "false")})
+    command.push_back(part);
   for (const std::string& axis : axes) command.push_back("--vary=" + axis);
   // One evaluation per case under the sanitizers (each then costs about ten times as much).
   for (const char* flag :
@@ -85,6 +89,27 @@ TEST(ToolsSweep, AFailingCaseIsReportedAndTheOthersFinish) {
   EXPECT_NE(md.find("--exponent"), std::string::npos) << md;  // its own message, from the log
   EXPECT_TRUE(fs::exists(dir / "cases" / "exponent=3" / "summary.json"));
   EXPECT_NE(Read(dir / "sweep.csv").find("exponent=7,7,failed"), std::string::npos);
+}
+
+TEST(ToolsSweep, UnderMpirunTheCasesAreSpreadOverTheRanksAndReportedOnce) {
+  if (testing::SanitizedBuild()) GTEST_SKIP() << "MPI is not built with the sanitizers";
+  if (!fs::exists("/usr/bin/mpirun"))
+    GTEST_SKIP() << "mpirun not found (apt-get install openmpi-bin)";
+  const fs::path dir = fs::path(testing::MakeScratchDir("sweep_mpi")) / "bump";
+  const Sweep run =
+      RunSweep(dir, {"bump_height=0.002,0.003,0.004"}, /*plot=*/false,
+               {"/usr/bin/mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2"});
+  ASSERT_EQ(run.status, 0) << run.output;
+  // Case i ran on rank i mod 2 (each rank counts its own), rank 0 wrote the one report.
+  EXPECT_NE(run.output.find("ergo_sweep rank 0: 2 cases"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("ergo_sweep rank 1: 1 case"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("3 of 3 cases finished on 2 ranks"), std::string::npos) << run.output;
+  const std::string csv = Read(dir / "sweep.csv");
+  EXPECT_EQ(CountLines(csv), 4) << csv;
+  for (const char* height : {"0.002", "0.003", "0.004"})
+    EXPECT_NE(csv.find(std::string("bump_height=") + height + "," + height + ",ok,"),
+              std::string::npos)
+        << csv;
 }
 
 TEST(ToolsSweep, BadSweepFlagsExitTwoNamingTheFlag) {

@@ -53,7 +53,7 @@
 #include "tools/common/run_signals.h"
 #include "tools/common/vtu_flags.h"
 #include "tools/ergo_population/population_report.h"
-#include "tools/ergo_population/ranks.h"
+#include "tools/common/ranks.h"
 
 DEFINE_string(population, "",
               "the population file (JSON; problems/population.h), e.g. "

@@ -10,6 +10,11 @@
 //   ergo_sweep --flagfile=data/mouse.flags --vary=gamma_power=-3:1 --vary=exponent=2,3,4
 //       --jobs=2 --out=sweep_mouse -- --max_evals=40
 //
+// Under `mpirun -np N ergo_sweep --mpi …` the cases are spread over the ranks (case i on
+// rank i mod N, each rank running --jobs at a time with the cores of its machine shared
+// among its ranks); rank 0 collects the outcomes and writes the reports. The case folders
+// must be on a file system every rank sees (one machine, or a shared one).
+//
 // Flags after `--` are passed to every case. Exit status: 0 every case succeeded, 1 some case
 // failed (sweep.md says which and why), 2 unusable input, 130 / 143 stopped by a signal
 // (cases running then finish or stop with it; rerun the same command to resume).
@@ -22,6 +27,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gflags/gflags.h>
@@ -34,6 +40,7 @@
 #include "tools/common/case_runner.h"
 #include "tools/common/child_process.h"
 #include "tools/common/flag_checks.h"
+#include "tools/common/ranks.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/sweep_plan.h"
 
@@ -42,6 +49,8 @@ DEFINE_int32(threads_per_job, 0, "--threads of each case; 0 = the cores divided 
 DEFINE_string(out, "", "sweep folder (required; created if missing, resumed if it holds cases)");
 DEFINE_string(ergo_optimize, "", "the ergo_optimize to run; empty = the one beside ergo_sweep");
 DEFINE_bool(plot, true, "write DIR/sweep_<flag>.png with tools/plot_sweep.py (matplotlib)");
+DEFINE_bool(mpi, false,
+            "spread the cases over the ranks of mpirun (mpirun -np N ergo_sweep --mpi)");
 
 namespace ergo {
 namespace {
@@ -202,40 +211,85 @@ void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
 
 void Plot(const fs::path& dir) { RunPictureScript("ergo_sweep", "plot_sweep.py", dir.string()); }
 
-int Run(const SweepArguments& arguments) {
-  ValidateAxes(arguments.axes);
-  if (FLAGS_out.empty()) throw InputError("--out", "", "is required", "give the sweep folder");
-  RequireInRange("jobs", static_cast<long>(FLAGS_jobs), 1, 64, "e.g. 2");
-  RequireInRange("threads_per_job", static_cast<long>(FLAGS_threads_per_job), 0, 1024,
-                 "0 = the cores divided by --jobs");
-  const std::string optimizer =
-      FLAGS_ergo_optimize.empty() ? ToolBesideThisProgram("ergo_optimize") : FLAGS_ergo_optimize;
-  const CaseRunner runner(FLAGS_out, optimizer, FLAGS_jobs, FLAGS_threads_per_job);
-  const fs::path dir = runner.dir();
+// An outcome as text, for the trip from a case's rank to rank 0.
+Json OutcomeJson(size_t index, const CaseOutcome& o) {
+  return {{"index", index},       {"finished", o.finished}, {"kept", o.kept},
+          {"failure", o.failure}, {"seconds", o.seconds},   {"summary", o.summary}};
+}
+
+int Run(const SweepArguments& arguments, int argc, char** argv) {
+  StopOnSignals signals;
+  Ranks ranks(FLAGS_mpi, &argc, &argv, &StopOnSignals::flag());
+  std::string error;
+  std::unique_ptr<CaseRunner> runner;
+  try {
+    ValidateAxes(arguments.axes);
+    if (FLAGS_out.empty()) throw InputError("--out", "", "is required", "give the sweep folder");
+    RequireInRange("jobs", static_cast<long>(FLAGS_jobs), 1, 64, "e.g. 2");
+    RequireInRange("threads_per_job", static_cast<long>(FLAGS_threads_per_job), 0, 1024,
+                   "0 = the cores divided by --jobs");
+    const std::string optimizer =
+        FLAGS_ergo_optimize.empty() ? ToolBesideThisProgram("ergo_optimize") : FLAGS_ergo_optimize;
+    // The ranks on one machine share its cores: each case gets cores / (jobs × ranks here).
+    const int cores = std::max(1u, std::thread::hardware_concurrency());
+    const int threads = FLAGS_threads_per_job > 0
+                            ? FLAGS_threads_per_job
+                            : std::max(1, cores / (FLAGS_jobs * ranks.local_size()));
+    runner = std::make_unique<CaseRunner>(FLAGS_out, optimizer, FLAGS_jobs, threads);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  error = ranks.FirstError(error);
+  if (!error.empty()) {
+    if (ranks.root()) std::cerr << "ergo_sweep: " << error << "\n";
+    return 2;
+  }
+  const fs::path dir = runner->dir();
 
   const std::vector<SweepCase> cases = SweepCases(arguments.axes);
   std::vector<ToolCase> runs;
-  for (const SweepCase& plan : cases) {
+  std::vector<size_t> mine;  // this rank's cases
+  for (size_t i = 0; i < cases.size(); ++i) {
+    if (!ranks.Owns(static_cast<int>(i))) continue;
+    const SweepCase& plan = cases[i];
     ToolCase run{plan.name, {}};
     if (!arguments.flagfile.empty()) run.arguments.push_back("--flagfile=" + arguments.flagfile);
     run.arguments.insert(run.arguments.end(), arguments.case_flags.begin(),
                          arguments.case_flags.end());
     for (const auto& [flag, value] : plan.flags) run.arguments.push_back("--" + flag + "=" + value);
     runs.push_back(std::move(run));
+    mine.push_back(i);
   }
-  std::cout << "ergo_sweep: ";
-  StopOnSignals signals;
-  const std::vector<CaseOutcome> ran = runner.Run(runs);
+  std::cout << "ergo_sweep" << (ranks.mpi() ? " rank " + std::to_string(ranks.rank()) : "") << ": ";
+  const std::vector<CaseOutcome> ran = runner->Run(runs);
+  Json shipped = Json::array();
+  for (size_t k = 0; k < mine.size(); ++k) shipped.push_back(OutcomeJson(mine[k], ran[k]));
+  const std::vector<std::string> gathered = ranks.Gather(WriteJson(shipped, 0));
+  const bool stopped = StopOnSignals::stopped();
+  if (!ranks.root()) return stopped ? StopOnSignals::ExitCode() : 0;
+  std::vector<CaseOutcome> all(cases.size());
+  for (const std::string& text : gathered) {
+    for (const Json& o : ParseJson(text, "a rank's outcomes")) {
+      CaseOutcome& outcome = all[o["index"].get<size_t>()];
+      outcome.finished = o["finished"].get<bool>();
+      outcome.kept = o["kept"].get<bool>();
+      outcome.failure = o["failure"].get<std::string>();
+      outcome.seconds = o["seconds"].get<double>();
+      outcome.summary = o["summary"];
+    }
+  }
   std::vector<SweepOutcome> outcomes(cases.size());
-  for (size_t i = 0; i < cases.size(); ++i) outcomes[i] = {&cases[i], ran[i]};
+  for (size_t i = 0; i < cases.size(); ++i) outcomes[i] = {&cases[i], all[i]};
   WriteReports(dir, arguments.axes, outcomes);
   if (FLAGS_plot) Plot(dir);
   const long failed = std::count_if(outcomes.begin(), outcomes.end(),
                                     [](const SweepOutcome& o) { return !o.run.finished; });
   std::cout << "ergo_sweep: " << cases.size() - failed << " of " << cases.size()
-            << " cases finished; wrote " << (dir / "sweep.csv").string() << ", sweep.md"
+            << " cases finished"
+            << (ranks.mpi() ? " on " + std::to_string(ranks.size()) + " ranks" : "") << "; wrote "
+            << (dir / "sweep.csv").string() << ", sweep.md"
             << (FLAGS_plot ? " and the pictures" : "") << "\n";
-  if (StopOnSignals::stopped()) {
+  if (stopped) {
     std::cerr << "ergo_sweep: stopped by a signal; run the same command again to resume\n";
     return StopOnSignals::ExitCode();
   }
@@ -265,7 +319,7 @@ int main(int argc, char** argv) {
   ergo::LogToStderrOnly();
   google::InitGoogleLogging(argv[0]);
   try {
-    return ergo::Run(arguments);
+    return ergo::Run(arguments, argc, argv);
   } catch (const ergo::InputError& error) {
     std::cerr << "ergo_sweep: " << error.what() << "\n";
     return 2;

@@ -1,4 +1,4 @@
-#include "tools/ergo_population/ranks.h"
+#include "tools/common/ranks.h"
 
 #include <cstdlib>
 #include <string>
@@ -90,6 +90,13 @@ std::string Ranks::Broadcast(const std::string& text) {
   if (impl_) return BroadcastString(MPI_COMM_WORLD, 0, text);
 #endif
   return text;
+}
+
+std::vector<std::string> Ranks::Gather(const std::string& text) {
+#ifdef ERGO_HAVE_MPI
+  if (impl_) return GatherStrings(MPI_COMM_WORLD, text);
+#endif
+  return {text};
 }
 
 void Ranks::Barrier() {

@@ -1,7 +1,7 @@
-// Ranks: the processes an ergo_population run spreads its bodies over — one (no MPI) or the
-// ranks of mpirun (--mpi; solvers/mpi/mpi_population_exchange.h). Body b lives on rank
-// b mod size. Everything that crosses ranks goes through here, so the run reads the same in
-// both modes.
+// Ranks: the processes a run spreads its work over — one (no MPI) or the ranks of mpirun
+// (--mpi; solvers/mpi/mpi_population_exchange.h): ergo_population's bodies (body b on rank
+// b mod size), ergo_sweep's cases. Everything that crosses ranks goes through here, so a
+// tool reads the same in both modes.
 #pragma once
 
 #include <atomic>
@@ -40,6 +40,8 @@ class Ranks {
   // The first rank's non-empty error (or ""), on every rank.
   std::string FirstError(const std::string& local_error);
   std::string Broadcast(const std::string& text);  // rank 0's text
+  // Every rank's `text` in rank order, on rank 0 (empty elsewhere).
+  std::vector<std::string> Gather(const std::string& text);
   void Barrier();
   // The stop that every rank agrees on (a signal on any rank, rank 0's wall-clock budget):
   // what the optimiser polls. Without MPI, the signal flag itself.
