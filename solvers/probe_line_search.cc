@@ -9,7 +9,7 @@
 #include <glog/logging.h>
 #include <omp.h>
 
-#include "ergo/equilibrium/single_threaded_blas.h"
+#include "ergo/mesh/blas_threads.h"
 
 namespace ergo {
 

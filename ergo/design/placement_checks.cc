@@ -1,6 +1,6 @@
 #include "ergo/design/placement_checks.h"
 
-#include "ergo/equilibrium/single_threaded_blas.h"
+#include "ergo/mesh/blas_threads.h"
 
 #include <algorithm>
 #include <array>
@@ -65,7 +65,7 @@ void ForEachInParallel(int count, const std::function<void(int)>& task) {
     work();
     return;
   }
-  // The tasks' equilibria side by side: one BLAS thread each (single_threaded_blas.h).
+  // The tasks' equilibria side by side: one BLAS thread each (ergo/mesh/blas_threads.h).
   const SingleThreadedBlas single_threaded_blas;
   std::vector<std::thread> threads;
   for (int w = 1; w < workers; ++w) threads.emplace_back(work);

@@ -5,6 +5,8 @@
 #include <cholmod.h>
 #include <glog/logging.h>
 
+#include "ergo/mesh/blas_threads.h"
+
 namespace ergo {
 
 struct SparseCholesky::Impl {
@@ -12,6 +14,7 @@ struct SparseCholesky::Impl {
   cholmod_factor* factor = nullptr;
 
   Impl() {
+    ApplyDefaultBlasThreads();  // one OpenBLAS thread unless told otherwise (blas_threads.h)
     cholmod_start(&common);
     common.supernodal = CHOLMOD_SUPERNODAL;
     common.final_ll = 1;                    // keep an LLᵀ factor

@@ -32,7 +32,7 @@
 #include <omp.h>
 
 #include "ergo/design/placement_checks.h"
-#include "ergo/equilibrium/single_threaded_blas.h"
+#include "ergo/mesh/blas_threads.h"
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
