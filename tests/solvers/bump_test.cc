@@ -17,6 +17,7 @@
 #include "problems/bump_scenario.h"
 #include "solvers/design_objective.h"
 #include "solvers/optimizer.h"
+#include "tests/support/test_paths.h"
 
 namespace ergo {
 namespace {
@@ -61,7 +62,9 @@ struct EvaluationLog {
 class BumpOptimizerTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BumpOptimizerTest, LowersPhiByAThirdWithin60EvaluationsAndReportsOnlyEvaluatedValues) {
-  constexpr int kBudget = 60;
+  // 60 evaluations; 20 under the sanitizers (10-20x slower; measured in the Release run at 20,
+  // every optimiser is 58.6 % (steepest) to 92.3 % lower: the 30 % asserted holds with room).
+  constexpr int kBudget = testing::SanitizedBuild() ? 20 : 60;
   DesignObjective objective(FollowedProblem());
   std::string error;
   std::unique_ptr<Optimizer> optimizer = MakeOptimizer(GetParam(), {}, &error);
@@ -124,7 +127,7 @@ TEST_P(BumpOptimizerTest, LowersPhiByAThirdWithin60EvaluationsAndReportsOnlyEval
   const bool budget_reason = result.stop_reason.rfind("budget:", 0) == 0;
   EXPECT_EQ(budget_reason, result.evaluations == kBudget) << result.stop_reason;
   if (budget_reason) {
-    EXPECT_EQ(result.stop_reason, "budget: 60 evaluations");
+    EXPECT_EQ(result.stop_reason, "budget: " + std::to_string(kBudget) + " evaluations");
   }
 }
 

@@ -153,9 +153,10 @@ void ExpectCompleteOutputs(const std::string& dir, bool pictures) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
-// The budget: 30 evaluations (12 under the sanitizers); the quick shoe is about 70 % lower
-// after 9 evaluations (README run), so either clears the 20 % asserted by far.
-constexpr int kShoeBudget = testing::SanitizedBuild() ? 12 : 30;
+// The budget: 30 evaluations (5 under the sanitizers, 10-20x slower); the quick shoe with
+// one placement is 53 % lower placed afresh after 5 evaluations (Release, 2026-12-02), so
+// either clears the 20 % asserted.
+constexpr int kShoeBudget = testing::SanitizedBuild() ? 5 : 30;
 
 TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   const std::string dir = testing::MakeScratchDir("optimize") + "/out";
