@@ -32,8 +32,8 @@
 #include <omp.h>
 
 #include "ergo/design/placement_checks.h"
-#include "ergo/mesh/blas_threads.h"
 #include "ergo/mesh/atomic_file.h"
+#include "ergo/mesh/blas_threads.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
 #include "problems/population.h"
@@ -49,11 +49,11 @@
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 #include "tools/common/population_scenarios.h"
+#include "tools/common/ranks.h"
 #include "tools/common/run_outputs.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/vtu_flags.h"
 #include "tools/ergo_population/population_report.h"
-#include "tools/common/ranks.h"
 
 DEFINE_string(population, "",
               "the population file (JSON; problems/population.h), e.g. "
