@@ -137,12 +137,16 @@ namespace {
 constexpr int kHeader = 6;
 constexpr size_t kMessageBytes = 480;
 
-int TimingEntries() {
-  int count = 0;
-  ForEachTimingEntry(
-      EvaluationTiming(), [&](const char*, double) { ++count; },
-      [&](const char*, long) { ++count; });
-  return count;
+// The time split's entry names, in ForEachTimingEntry's order (the slots after the header).
+const std::vector<std::string>& TimingNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    ForEachTimingEntry(
+        EvaluationTiming(), [&](const char* name, double) { list.push_back(name); },
+        [&](const char* name, long) { list.push_back(name); });
+    return list;
+  }();
+  return names;
 }
 
 }  // namespace
@@ -150,13 +154,10 @@ int TimingEntries() {
 void PopulationObjective::Exchange(bool with_gradient, int num_parameters,
                                    std::vector<ObjectiveValue>* values) {
   const int count = size();
-  const int timing_entries = TimingEntries();
+  const std::vector<std::string>& names = TimingNames();
+  const int timing_entries = static_cast<int>(names.size());
   const size_t stride = kHeader + timing_entries + (with_gradient ? num_parameters : 0);
   std::vector<double> buffer(stride * count, 0.0);
-  std::vector<std::string> names;  // the timing entries, in order
-  ForEachTimingEntry(
-      EvaluationTiming(), [&](const char* name, double) { names.push_back(name); },
-      [&](const char* name, long) { names.push_back(name); });
   for (int b = 0; b < count; ++b) {
     if (!members_[b].objective) continue;
     const ObjectiveValue& v = (*values)[b];
