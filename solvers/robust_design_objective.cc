@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
 
 #include <glog/logging.h>
 
@@ -11,10 +13,15 @@ RobustDesignObjective::RobustDesignObjective(const DesignProblem& problem,
                                              const std::vector<Placement>& placements)
     : placements_(placements) {
   CHECK(!placements.empty());
-  for (const Placement& placement : placements)
-    problems_.push_back(std::make_unique<DesignProblem>(
-        placement.shift.isZero() && placement.tilt.isZero() ? problem
-                                                             : PlacedProblem(problem, placement)));
+  for (const Placement& placement : placements) {
+    const bool centred = placement.shift.isZero() && placement.tilt.isZero();
+    auto placed =
+        std::make_unique<DesignProblem>(centred ? problem : PlacedProblem(problem, placement));
+    // PlacedProblem places afresh at every evaluation; each placement here follows its own
+    // path in the problem's mode (a followed path starts fresh), as the centred one does.
+    placed->set_placement(problem.options().placement);
+    problems_.push_back(std::move(placed));
+  }
 }
 
 RobustDesignObjective::RobustDesignObjective(const RobustDesignObjective& other)
