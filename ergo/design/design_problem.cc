@@ -29,6 +29,13 @@ DesignOptions WithContactShare(const DesignOptions& options, const LayeredBody& 
   return out;
 }
 
+// The pressures with the support side's score derivatives zeroed, for ζ of the skin alone.
+ContactPressures SkinSideOnly(ContactPressures pressures) {
+  pressures.support.d_force_magnitude.setZero();
+  pressures.support.d_area.setZero();
+  return pressures;
+}
+
 }  // namespace
 
 DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
@@ -237,7 +244,7 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   out.pressures = pressures_.Evaluate(e.contacts, support_.vertex_areas());
   out.zeta_human = out.pressures.human.cost;
   out.zeta_support = out.pressures.support.cost;
-  out.zeta = out.zeta_human + out.zeta_support;
+  out.zeta = out.zeta_human + (options_.score_support_side ? out.zeta_support : 0.0);
   timing.pressure_seconds = SecondsSince(mark);
   mark = Clock::now();
   const SmoothnessValue psi =
@@ -249,7 +256,10 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
 
   if (with_gradient) {
     mark = Clock::now();
-    ScorePartials partials = PressureScorePartials(out.pressures, body_);
+    ContactPressures skin_side;
+    const ContactPressures& scored =
+        options_.score_support_side ? out.pressures : (skin_side = SkinSideOnly(out.pressures));
+    ScorePartials partials = PressureScorePartials(scored, body_);
     // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
     const Eigen::VectorXd rhs =
         potential.system().ReduceVertexGradient(state, e.positions, partials.body);

@@ -72,6 +72,11 @@ struct DesignOptions {
   // moved along the tangent dy/dx·δx (one linear solve with the last Newton factor) when
   // that lowers the energy: fewer Newton iterations (quick shoe: 0.1 mm 3 → 2, 0.3 mm 5 → 4).
   bool tangent_predictor = true;
+  // Whether ζ counts the support's vertices inside the skin (the paper's bi-directional
+  // score) or the skin's side alone, what the person feels. Under one-way contact the
+  // support's samples push nothing, and their term depends on how the two meshes interleave
+  // (ergo/design/README.md, "Designs on two sole meshes").
+  bool score_support_side = true;
 };
 
 struct DesignEvaluation {

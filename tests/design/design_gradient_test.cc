@@ -26,9 +26,10 @@ struct Case {
   std::string name;
   std::string lock;
   DesignParameterization parameterization;
-  double smoothing_radius = 0;  // pressure smoothing: 0 = umbrella, else Helmholtz, m
-  double filter_radius = 0;     // for kFiltered, m
-  bool support_springs = true;  // two-way contact, or support vertices scored only
+  double smoothing_radius = 0;     // pressure smoothing: 0 = umbrella, else Helmholtz, m
+  double filter_radius = 0;        // for kFiltered, m
+  bool support_springs = true;     // two-way contact, or support vertices scored only
+  bool score_support_side = true;  // ζ of both surfaces, or of the skin alone
 };
 
 // A 10 cm soft hollow cube standing on a corner in a coarse square pyramid pit (45° facets,
@@ -71,7 +72,7 @@ PitScene MakePitScene(const std::string& lock) {
 
 DesignOptions TightOptions(DesignParameterization parameterization, const std::vector<bool>& active,
                            double smoothing_radius = 0, double filter_radius = 0,
-                           bool support_springs = true) {
+                           bool support_springs = true, bool score_support_side = true) {
   DesignOptions options;
   options.equilibrium.contact_stiffness = 3e7;  // κ, Pa/m
   // Tight equilibria: the FD quotient differences φ at x ± h d; an equilibrium error δy
@@ -81,6 +82,7 @@ DesignOptions TightOptions(DesignParameterization parameterization, const std::v
   options.pressure = {3, 1.0, smoothing_radius};
   options.filter_radius = filter_radius;
   options.equilibrium.contact_support_springs = support_springs;
+  options.score_support_side = score_support_side;
   options.taubin = {0.5, -0.53, 2};
   options.gamma = 0;  // set per check
   options.parameterization = parameterization;
@@ -138,7 +140,7 @@ TEST_P(DesignGradient, AdjointGradientMatchesFiniteDifferencesThroughTheEquilibr
   const PitScene scene = MakePitScene(c.lock);
   DesignProblem problem(scene.body, scene.support, scene.start,
                         TightOptions(c.parameterization, scene.active, c.smoothing_radius,
-                                     c.filter_radius, c.support_springs));
+                                     c.filter_radius, c.support_springs, c.score_support_side));
   const Eigen::VectorXd x0 = problem.InitialDesign();
   // γ of the same order as ζ/ψ so that both parts matter in φ.
   DesignEvaluation at = problem.Evaluate(x0, true);
@@ -151,6 +153,8 @@ TEST_P(DesignGradient, AdjointGradientMatchesFiniteDifferencesThroughTheEquilibr
   const SurfaceContacts& contacts = at.pressures.contacts;
   ASSERT_GT(contacts.support.size(), 0)
       << "no support vertex inside the skin: the two-way part is untested";
+  ASSERT_GT(at.zeta_support, 0);
+  EXPECT_EQ(at.zeta, c.score_support_side ? at.zeta_human + at.zeta_support : at.zeta_human);
   {
     std::set<FeatureType> types;
     for (const Contact& contact : contacts.skin.contacts) types.insert(contact.anchor.feature.type);
@@ -218,7 +222,10 @@ INSTANTIATE_TEST_SUITE_P(
              0.08},
         // The paper's uni-directional equilibrium with the support's vertices scored only.
         Case{"one_way_filtered_helmholtz", "tx,tz", DesignParameterization::kFiltered, 0.05, 0.08,
-             false}),
+             false},
+        // The same with ζ of the skin's side alone (--score_sides=skin).
+        Case{"one_way_skin_side_filtered_helmholtz", "tx,tz", DesignParameterization::kFiltered,
+             0.05, 0.08, false, false}),
     [](const auto& info) { return info.param.name; });
 
 TEST(DesignGradientFailure, ANonConvergingEquilibriumGivesAClearFailureNotANumber) {

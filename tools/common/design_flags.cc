@@ -25,6 +25,10 @@ DEFINE_string(contact_stiffness, "scenario",
               "spring is κ times its area), auto (calibrate to --target_penetration), or "
               "scenario (the preset's)");
 DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
+DEFINE_string(score_sides, "both",
+              "which contact sides ζ counts: both (the paper's: skin vertices in the support "
+              "and support vertices in the skin) or skin (the skin's side alone, what the "
+              "person feels; mesh-consistent under one-way contact)");
 DEFINE_bool(support_springs, false,
             "two-way contact: support vertices inside the skin push it too (default false: they "
             "are scored but push nothing, the paper's uni-directional equilibrium)");
@@ -103,6 +107,10 @@ void ApplyDesignFlags(Scenario* scenario) {
                  "e.g. 100");
   design.equilibrium.max_iterations = FLAGS_max_newton_iterations;
   design.equilibrium.contact_support_springs = FLAGS_support_springs;
+  if (FLAGS_score_sides != "both" && FLAGS_score_sides != "skin")
+    throw InputError("--score_sides", "", "'" + FLAGS_score_sides + "' is unknown",
+                     "use both or skin");
+  design.score_support_side = FLAGS_score_sides == "both";
   design.pressure.exponent = FLAGS_exponent;
   design.pressure.smoothing = FLAGS_pressure_smoothing;
   design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};
