@@ -34,9 +34,7 @@ double DesignObjective::LargestMove(const Eigen::VectorXd& dx) const {
 }
 
 double DesignObjective::BoxHalfWidthForMove(double move) const {
-  return problem_->parameterization().kind() == DesignParameterization::kPositions
-             ? move / std::sqrt(3.0)
-             : move;
+  return problem_->parameterization().BoxHalfWidthForMove(move);
 }
 
 std::string DesignObjective::Describe() const {
@@ -50,7 +48,8 @@ std::string DesignObjective::Describe() const {
       space << "normal displacements";
       break;
     case DesignParameterization::kFiltered:
-      space << "filtered normal displacements (radius " << 1e3 * p.filter_radius() << " mm)";
+      space << "filtered normal displacements (radius " << 1e3 * p.filter_radius() << " mm"
+            << (p.l2_metric() ? ", L² metric)" : ")");
       break;
   }
   std::ostringstream gamma;

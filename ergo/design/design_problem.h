@@ -65,7 +65,10 @@ struct DesignOptions {
   TaubinParameters taubin{0.5, -0.53, 1};  // ψ's Taubin λ, μ, m (Eq. 14)
   double gamma = 0;                        // weight of ψ in φ (see AutoGamma)
   DesignParameterization parameterization = DesignParameterization::kPositions;
-  double filter_radius = 0;   // m; the filter's radius r when parameterization == kFiltered
+  double filter_radius = 0;  // m; the filter's radius r when parameterization == kFiltered
+  // kFiltered: design variables scaled so that the optimiser's inner product is the L² one
+  // (ergo/design/support_parameterization.h); false: one raw θ per vertex.
+  bool l2_design_metric = false;
   std::vector<bool> active;   // movable support vertices; empty = all
   int warm_start_cache = 16;  // equilibria kept for warm starts
   // Warm starts from the last equilibrium after a design step of at most 0.5 mm are first

@@ -10,8 +10,12 @@
 namespace ergo {
 
 SupportParameterization::SupportParameterization(const TriMesh& initial, std::vector<bool> active,
-                                                 DesignParameterization kind, double filter_radius)
-    : initial_(initial.vertices), normals_(VertexNormals(initial)), kind_(kind) {
+                                                 DesignParameterization kind, double filter_radius,
+                                                 bool l2_metric)
+    : initial_(initial.vertices),
+      normals_(VertexNormals(initial)),
+      kind_(kind),
+      l2_metric_(l2_metric && kind == DesignParameterization::kFiltered) {
   CHECK(active.empty() || active.size() == static_cast<size_t>(initial.vertices.rows()));
   std::vector<int> ids;
   for (Eigen::Index v = 0; v < initial.vertices.rows(); ++v)
@@ -50,6 +54,9 @@ void SupportParameterization::BuildFilter(const TriMesh& initial) {
   // either): a positive M_ii makes A_ii = M_ii and so F's row the identity.
   for (Eigen::Index i = 0; i < n; ++i)
     if (!(filter_mass_[i] > 0)) filter_mass_[i] = stand_in;
+  const double reference_area = std::pow(filter_radius_ / 2.5, 2);
+  metric_weight_ = l2_metric_ ? (filter_mass_ / reference_area).cwiseSqrt().eval()
+                              : Eigen::VectorXd::Ones(n).eval();
 
   const double R = filter_radius_ / (2.0 * std::sqrt(3.0));
   SparseMatrix mass(n, n);
@@ -65,12 +72,12 @@ void SupportParameterization::BuildFilter(const TriMesh& initial) {
 
 Eigen::VectorXd SupportParameterization::Filter(const Eigen::VectorXd& theta) const {
   if (theta.size() == 0) return theta;
-  return filter_cholesky_.Solve(filter_mass_.cwiseProduct(theta));
+  return filter_cholesky_.Solve(filter_mass_.cwiseProduct(theta.cwiseQuotient(metric_weight_)));
 }
 
 Eigen::VectorXd SupportParameterization::FilterTransposed(const Eigen::VectorXd& g) const {
   if (g.size() == 0) return g;
-  return filter_mass_.cwiseProduct(filter_cholesky_.Solve(g));
+  return filter_mass_.cwiseProduct(filter_cholesky_.Solve(g)).cwiseQuotient(metric_weight_);
 }
 
 int SupportParameterization::size() const {
@@ -130,6 +137,14 @@ Eigen::VectorXd SupportParameterization::VertexMoves(const Eigen::VectorXd& dx) 
   return moves;
 }
 
+double SupportParameterization::BoxHalfWidthForMove(double move) const {
+  if (kind_ == DesignParameterization::kPositions) return move / std::sqrt(3.0);
+  // F averages (F·1 = 1, F ≥ 0 where A is an M-matrix, as on the scenes' grid tops), so
+  // |Fθ| ≤ max|θ|: |θᵢ| ≤ move suffices.
+  if (!l2_metric_ || metric_weight_.size() == 0) return move;
+  return move * metric_weight_.minCoeff();
+}
+
 Eigen::VectorXd SupportParameterization::NormalDisplacements(const Vertices& positions) const {
   Eigen::VectorXd displacement(active_.size());
   for (Eigen::Index i = 0; i < active_.size(); ++i) {
@@ -151,7 +166,9 @@ Eigen::VectorXd SupportParameterization::DesignFor(const Vertices& positions) co
     case DesignParameterization::kNormalDisplacement:
       return NormalDisplacements(positions);
     case DesignParameterization::kFiltered:
-      return (filter_matrix_ * NormalDisplacements(positions)).cwiseQuotient(filter_mass_);
+      return (filter_matrix_ * NormalDisplacements(positions))
+          .cwiseQuotient(filter_mass_)
+          .cwiseProduct(metric_weight_);
   }
   LOG(FATAL) << "unknown parameterization";
   return {};

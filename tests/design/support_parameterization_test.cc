@@ -90,8 +90,14 @@ double Inner(const Vertices& a, const Vertices& b) { return a.cwiseProduct(b).su
 
 TEST(Design, FilteredPullBackIsTheExactTranspose) {
   const Block block = MakeBlock();
-  for (DesignParameterization kind : kKinds) {
-    const SupportParameterization p(block.mesh, block.active, kind, kRadius);
+  struct Space {
+    DesignParameterization kind;
+    bool l2_metric;
+  };
+  for (const Space space : {Space{kKinds[0], false}, Space{kKinds[1], false},
+                            Space{kKinds[2], false}, Space{kKinds[2], true}}) {
+    const std::string name = Name(space.kind) + (space.l2_metric ? " (L² metric)" : "");
+    const SupportParameterization p(block.mesh, block.active, space.kind, kRadius, space.l2_metric);
     std::mt19937 rng(11);
     const Eigen::VectorXd theta = RandomDesign(p, &rng);
     const Vertices G = RandomField(block.mesh.vertices.rows(), &rng);
@@ -107,9 +113,32 @@ TEST(Design, FilteredPullBackIsTheExactTranspose) {
     const double error = testing::WorstGradientError(
         phi, gradient, theta, floor, testing::StepSweep(1e-2, 4), /*random_directions=*/8,
         /*max_coordinates=*/p.size(), /*seed=*/3, &report);
-    EXPECT_LT(error, 1e-8) << Name(kind) << ": " << report;
-    std::cout << Name(kind) << ": " << p.size() << " variables, worst finite-difference error "
-              << error << "\n";
+    EXPECT_LT(error, 1e-8) << name << ": " << report;
+    std::cout << name << ": " << p.size() << " variables, worst finite-difference error " << error
+              << "\n";
+  }
+}
+
+TEST(Design, L2MetricBoxKeepsEveryVertexWithinTheMove) {
+  // The box |θ̃ᵢ| ≤ BoxHalfWidthForMove(m) at its corners (every variable at ±the half-width,
+  // random signs) moves no vertex farther than m; without the metric the half-width is m.
+  const Block block = MakeBlock();
+  const SupportParameterization l2(block.mesh, block.active, DesignParameterization::kFiltered,
+                                   kRadius, true);
+  const SupportParameterization raw(block.mesh, block.active, DesignParameterization::kFiltered,
+                                    kRadius, false);
+  constexpr double kMove = 2e-3;
+  EXPECT_EQ(raw.BoxHalfWidthForMove(kMove), kMove);
+  const double half_width = l2.BoxHalfWidthForMove(kMove);
+  EXPECT_GT(half_width, 0);
+  EXPECT_NE(half_width, kMove);
+  std::mt19937 rng(21);
+  std::bernoulli_distribution sign;
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::VectorXd corner(l2.size());
+    for (Eigen::Index i = 0; i < corner.size(); ++i)
+      corner[i] = sign(rng) ? half_width : -half_width;
+    EXPECT_LE(l2.VertexMoves(corner).maxCoeff(), kMove * (1 + 1e-12));
   }
 }
 
@@ -222,8 +251,9 @@ TEST(Design, FilterTendsToTheIdentityAsTheRadiusShrinks) {
 
 TEST(Design, DesignForInvertsPositionsForEveryKind) {
   const Block block = MakeBlock();
-  for (DesignParameterization kind : kKinds) {
-    const SupportParameterization p(block.mesh, block.active, kind, kRadius);
+  for (int k = 0; k < 4; ++k) {
+    const DesignParameterization kind = kKinds[std::min(k, 2)];  // 3: filtered, L² metric
+    const SupportParameterization p(block.mesh, block.active, kind, kRadius, k == 3);
     std::mt19937 rng(16);
     const Eigen::VectorXd x = RandomDesign(p, &rng);
     const Eigen::VectorXd back = p.DesignFor(p.Positions(x));

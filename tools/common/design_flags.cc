@@ -25,6 +25,10 @@ DEFINE_string(contact_stiffness, "scenario",
               "spring is κ times its area), auto (calibrate to --target_penetration), or "
               "scenario (the preset's)");
 DEFINE_double(target_penetration, 3e-4, "max penetration --contact_stiffness=auto aims at, m");
+DEFINE_string(design_metric, "vertex",
+              "filtered design space: the optimiser's inner product on the design variables: "
+              "vertex (one raw value per support vertex, weighted by its area) or l2 (scaled "
+              "by the square root of the vertex area: the same metric on every support mesh)");
 DEFINE_string(score_sides, "both",
               "which contact sides ζ counts: both (the paper's: skin vertices in the support "
               "and support vertices in the skin) or skin (the skin's side alone, what the "
@@ -111,6 +115,10 @@ void ApplyDesignFlags(Scenario* scenario) {
     throw InputError("--score_sides", "", "'" + FLAGS_score_sides + "' is unknown",
                      "use both or skin");
   design.score_support_side = FLAGS_score_sides == "both";
+  if (FLAGS_design_metric != "vertex" && FLAGS_design_metric != "l2")
+    throw InputError("--design_metric", "", "'" + FLAGS_design_metric + "' is unknown",
+                     "use vertex or l2");
+  design.l2_design_metric = FLAGS_design_metric == "l2";
   design.pressure.exponent = FLAGS_exponent;
   design.pressure.smoothing = FLAGS_pressure_smoothing;
   design.taubin = {FLAGS_taubin_lambda, FLAGS_taubin_mu, FLAGS_taubin_iterations};
