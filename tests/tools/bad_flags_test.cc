@@ -72,6 +72,7 @@ std::vector<BadFlagCase> Cases(const std::string& dir) {
       {"ergo_optimize", {shoe, "--filter_radius=-2", out}, "--filter_radius"},
       {"ergo_optimize", {shoe, "--placement=sideways", out}, "--placement"},
       {"ergo_optimize", {shoe, "--score_sides=support", out}, "--score_sides"},
+      {"ergo_optimize", {shoe, "--design_metric=riemann", out}, "--design_metric"},
       {"ergo_optimize", {shoe, "--vtu_format=xml", out}, "--vtu_format"},
       {"ergo_optimize", {shoe, "--no_such_flag=1", out}, "--no_such_flag"},
       {"ergo_optimize", {"--flagfile=" + dir + "/missing.flags", out}, "--flagfile"},
