@@ -29,13 +29,6 @@ DesignOptions WithContactShare(const DesignOptions& options, const LayeredBody& 
   return out;
 }
 
-// The pressures with the support side's score derivatives zeroed, for ζ of the skin alone.
-ContactPressures SkinSideOnly(ContactPressures pressures) {
-  pressures.support.d_force_magnitude.setZero();
-  pressures.support.d_area.setZero();
-  return pressures;
-}
-
 }  // namespace
 
 DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
@@ -257,10 +250,8 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
 
   if (with_gradient) {
     mark = Clock::now();
-    ContactPressures skin_side;
-    const ContactPressures& scored =
-        options_.score_support_side ? out.pressures : (skin_side = SkinSideOnly(out.pressures));
-    ScorePartials partials = PressureScorePartials(scored, body_);
+    ScorePartials partials =
+        PressureScorePartials(out.pressures, body_, options_.score_support_side);
     // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
     const Eigen::VectorXd rhs =
         potential.system().ReduceVertexGradient(state, e.positions, partials.body);

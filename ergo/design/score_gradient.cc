@@ -31,15 +31,18 @@ int SpringVariables(const Contact& contact, bool point_on_body, const Skin& skin
 
 }  // namespace
 
-ScorePartials PressureScorePartials(const ContactPressures& pressures, const LayeredBody& body) {
+ScorePartials PressureScorePartials(const ContactPressures& pressures, const LayeredBody& body,
+                                    bool support_side) {
   const Skin& skin = body.skin();
   const SurfaceContacts& contacts = pressures.contacts;
   ScorePartials out;
   out.body = Vertices::Zero(body.rest().vertices.rows(), 3);
   out.support.position = Vertices::Zero(contacts.support_force.rows(), 3);
-  out.support.area = pressures.support.d_area;  // Σ s P̄^e and the denominators of P
+  // Σ s P̄^e and the denominators of P
+  out.support.area = support_side ? pressures.support.d_area
+                                  : Eigen::VectorXd::Zero(pressures.support.d_area.size());
 
-  for (int side = 0; side < 2; ++side) {
+  for (int side = 0; side < (support_side ? 2 : 1); ++side) {
     const bool point_on_body = side == 0;
     for (const Contact& contact : (point_on_body ? contacts.skin : contacts.support).contacts) {
       // The spring's point carries the load ‖f‖/share (p = κg there), f = −∂E/∂p.

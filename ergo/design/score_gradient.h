@@ -36,8 +36,10 @@ struct ScorePartials {
 };
 
 // ∂ζ/∂(body positions) and ∂ζ/∂(support shape) from the pressures' contact springs (their
-// Hessians must have been evaluated).
-ScorePartials PressureScorePartials(const ContactPressures& pressures, const LayeredBody& body);
+// Hessians must have been evaluated). `support_side` false: of ζ's skin side alone
+// (DesignOptions::score_support_side).
+ScorePartials PressureScorePartials(const ContactPressures& pressures, const LayeredBody& body,
+                                    bool support_side = true);
 
 // zᵀ ∂G/∂x, the adjoint contraction (Eq. 19): G = ∂E/∂y the equilibrium residual, whose
 // contact part depends on the support through the springs' feature positions, points and
