@@ -28,19 +28,10 @@
 #include "problems/chair_scenario.h"
 #include "problems/mouse_scenario.h"
 #include "problems/shoe_scenario.h"
+#include "tests/benchmarks/evaluation_counters.h"
 
 namespace ergo {
 namespace {
-
-// Every entry of the split, plus the sizes, as counters.
-void ReportTiming(benchmark::State& state, const Scenario& scenario, const DesignEvaluation& e) {
-  ForEachTimingEntry(
-      e.timing, [&](const char* name, double seconds) { state.counters[name] = seconds; },
-      [&](const char* name, long count) { state.counters[name] = static_cast<double>(count); });
-  state.counters["body_vertices"] = static_cast<double>(scenario.body->rest().vertices.rows());
-  state.counters["support_vertices"] = static_cast<double>(scenario.support.vertices.rows());
-  state.counters["ok"] = e.ok ? 1 : 0;
-}
 
 // --- The ball on the bump -----------------------------------------------------------------
 
@@ -76,7 +67,7 @@ void BM_DesignEvaluationWithGradient(benchmark::State& state) {
     // A new design each time (0.1 mm further along −∇φ): a genuine warm re-solve.
     e = f.problem->Evaluate(f.x0 + (++k) * f.step, true);
   }
-  ReportTiming(state, f.scenario, e);
+  ReportEvaluationCounters(state, f.scenario, e);
   state.counters["warm_solve_s"] = e.equilibrium.total_seconds;
   state.counters["gradient_over_solve"] = e.timing.adjoint_seconds / e.equilibrium.total_seconds;
 }
@@ -148,7 +139,7 @@ void BM_PaperCold(benchmark::State& state, const std::string& name) {
     evaluated = std::move(problem);
   }
   KeepColdEvaluation(s, *evaluated, e);
-  ReportTiming(state, s.scenario, e);
+  ReportEvaluationCounters(state, s.scenario, e);
 }
 
 // A warm evaluation after the step (on a copy of the problem after the cold one, so every
@@ -174,7 +165,7 @@ void PaperWarmStep(benchmark::State& state, const std::string& name, bool gradie
     e = WarmStep(s, *after_cold, state);
     if (gradient_only) state.SetIterationTime(e.timing.adjoint_seconds);
   }
-  ReportTiming(state, s.scenario, e);
+  ReportEvaluationCounters(state, s.scenario, e);
   state.counters["step_mm"] = 1e3 * kStep;
   if (gradient_only)
     state.counters["gradient_over_evaluation"] = e.timing.adjoint_seconds / e.timing.total_seconds;

@@ -24,6 +24,7 @@
 
 #include "ergo/design/design_problem.h"
 #include "problems/chair_scenario.h"
+#include "tests/benchmarks/evaluation_counters.h"
 
 namespace ergo {
 namespace {
@@ -91,13 +92,8 @@ void BM_WarmEvaluationScaling(benchmark::State& state, int body_thousands, int s
     state.ResumeTiming();
     e = problem.Evaluate(s.x0 + s.step, true);
   }
-  ForEachTimingEntry(
-      e.timing, [&](const char* name, double seconds) { state.counters[name] = seconds; },
-      [&](const char* name, long count) { state.counters[name] = static_cast<double>(count); });
-  state.counters["body_vertices"] = static_cast<double>(s.scenario.body->rest().vertices.rows());
-  state.counters["support_vertices"] = static_cast<double>(s.scenario.support.vertices.rows());
+  ReportEvaluationCounters(state, s.scenario, e);
   state.counters["one_factorization_s"] = s.one_factorization_s;
-  state.counters["ok"] = e.ok ? 1 : 0;
 }
 
 const bool kScalingRowsRegistered = [] {
