@@ -65,6 +65,11 @@ def main():
     runs = [a for a in sys.argv[1:] if not a.startswith("--transfer=")]
     if len(runs) != 2 or len(transfer) > 1:
         sys.exit(__doc__)
+    for run in runs:
+        for name in ("support_initial.ply", "support_optimized.ply"):
+            if not os.path.isfile(os.path.join(run, name)):
+                sys.exit(f"compare_sole_surfaces.py: {run} has no {name}; give two "
+                         "ergo_optimize output directories")
     a_points, a = top_displacement(runs[0])
     b_points, b = top_displacement(runs[1])
     for name, points, own, other_points, other in (("A", a_points, a, b_points, b),

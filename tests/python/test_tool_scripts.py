@@ -108,3 +108,16 @@ def test_plot_scaling_fits_the_exponent_of_a_power_law(source_dir, tmp_path):
     exponents = [float(v) for v in re.findall(r"\^(-?[0-9.]+)", completed.stdout)]
     assert exponents == pytest.approx([1.2, 0.5, 1.5], abs=0.005)
     assert sum(line.startswith("|") for line in completed.stdout.splitlines()) == 7  # + header, rule
+
+
+def test_compare_names_a_directory_that_is_not_a_run(source_dir, tmp_path):
+    pytest.importorskip("matplotlib")  # the script imports it first
+    write_grid_run(tmp_path / "run", 10, bump)
+    (tmp_path / "empty").mkdir()
+    completed = subprocess.run(
+        [sys.executable, str(source_dir / "tools" / "compare_sole_surfaces.py"),
+         str(tmp_path / "run"), str(tmp_path / "empty")], capture_output=True, text=True,
+        timeout=300)
+    assert completed.returncode == 1
+    assert "empty has no support_initial.ply" in completed.stderr
+    assert "Traceback" not in completed.stderr
