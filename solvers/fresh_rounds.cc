@@ -70,6 +70,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
       shifted.newton_iterations += newton_before;
       shifted.seconds += round_start;
       shifted.timing += timing_before;
+      shifted.kept_fresh_phi = state.kept_fresh_phi;
       state.history.push_back(shifted);
       return control.progress ? control.progress(shifted) : true;
     };

@@ -20,7 +20,7 @@ std::string CsvField(const std::string& text) {
 
 void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
   WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step";
+    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step,kept_fresh_phi";
     // The time split's columns; its newton_iterations is the column above already.
     ForEachTimingEntry(
         EvaluationTiming(), [&](const char* name, double) { out << ',' << name; },
@@ -39,6 +39,8 @@ void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
       if (r.gradient_norm >= 0) WriteDouble(out, r.gradient_norm);
       out << ',';
       WriteDouble(out, r.step);
+      out << ',';
+      if (std::isfinite(r.kept_fresh_phi)) WriteDouble(out, r.kept_fresh_phi);
       ForEachTimingEntry(
           r.timing,
           [&](const char*, double seconds) {

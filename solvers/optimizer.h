@@ -52,6 +52,10 @@ struct IterationRecord {
   // The time split of every evaluation so far (cumulative like `evaluations`; zeros for
   // objectives that are not design problems).
   EvaluationTiming timing;
+  // Runs in fresh rounds (solvers/fresh_rounds.h): the score afresh of the design kept when
+  // this entry was recorded (φ₀ afresh until a round's check keeps a better one). NaN for
+  // other runs.
+  double kept_fresh_phi = std::numeric_limits<double>::quiet_NaN();
 };
 
 // How a caller watches and stops a run. Everything is optional.

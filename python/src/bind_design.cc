@@ -103,6 +103,7 @@ py::dict RecordDict(const IterationRecord& r) {
   d["psi"] = r.psi;
   d["gradient_norm"] = r.gradient_norm;
   d["step"] = r.step;
+  d["kept_fresh_phi"] = r.kept_fresh_phi;  // NaN outside runs in fresh rounds
   d["time_split"] = TimingDict(r.timing);  // cumulative, as history.csv's columns
   return d;
 }

@@ -63,7 +63,7 @@ TEST(Solvers, ErgoCompareRunsTwoOptimizersOnTheBumpAndWritesItsFiles) {
   for (const char* name : {"paper-ncg", "nlopt-mma"}) {
     EXPECT_EQ(FirstLine(out + "/" + name + "_history.csv"),
               "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step,"
-              "evaluation_s,support_s,placement_s,predictor_s,contact_s,assembly_s,"
+              "kept_fresh_phi,evaluation_s,support_s,placement_s,predictor_s,contact_s,assembly_s,"
               "factorization_s,solve_s,line_search_s,pressure_s,psi_s,adjoint_s,other_s,"
               "equilibria,factorizations,pcg_iterations,line_search_trials,"
               "adjoint_factorizations,adjoint_pcg_iterations,fresh_placements")

@@ -81,7 +81,8 @@ void ExpectTimeSplit(const std::string& dir) {
   const Csv csv = ReadCsv(dir + "/history.csv");
   const std::vector<std::string> first = {"iteration", "evaluations", "newton_iterations",
                                           "wall_s",    "phi",         "zeta",
-                                          "psi",       "grad_norm",   "step"};
+                                          "psi",       "grad_norm",   "step",
+                                          "kept_fresh_phi"};
   ASSERT_GE(csv.header.size(), first.size());
   EXPECT_EQ(std::vector<std::string>(csv.header.begin(), csv.header.begin() + first.size()), first);
   ASSERT_FALSE(csv.rows.empty());
@@ -114,6 +115,22 @@ void ExpectTimeSplit(const std::string& dir) {
   // One equilibrium per evaluation (one placement).
   EXPECT_EQ(GetNumber(split, "equilibria", "time_split"),
             GetNumber(summary, "evaluations", "summary"));
+
+  // The runs are in fresh rounds: every row carries the kept design's score afresh, φ₀ at
+  // the start, never rising, and never below the design finally kept (whose fresh check may
+  // come after the last row). 1e-9: the CSV and the JSON print 17 significant digits.
+  const int kept = csv.Column("kept_fresh_phi");
+  const double initial = GetNumber(summary, "initial_score", "summary");
+  const double optimized = GetNumber(summary, "optimized_score", "summary");
+  EXPECT_NEAR(std::stod(csv.rows.front()[kept]), initial, 1e-9 * initial);
+  double previous = initial;
+  for (const std::vector<std::string>& row : csv.rows) {
+    ASSERT_FALSE(row[kept].empty());
+    const double value = std::stod(row[kept]);
+    EXPECT_LE(value, previous * (1 + 1e-12));
+    EXPECT_GE(value, optimized * (1 - 1e-9));
+    previous = value;
+  }
 }
 
 ChildProcessResult RunTool(std::vector<std::string> arguments, const std::string& log) {

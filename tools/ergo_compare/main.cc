@@ -9,9 +9,10 @@
 // Every optimiser runs in the same fresh rounds as ergo_optimize (solvers/fresh_rounds.h):
 // the design each keeps is the one that scores best with the body placed afresh, and the
 // table ranks them by that fresh reduction (the optimiser's own value on its path beside it).
-// Writes DIR/compare.csv, DIR/<optimizer>_history.csv and DIR/compare.png (φ/φ₀ against
-// evaluations and against seconds, by tools/plot_compare.py; skipped with a warning when
-// python3 or matplotlib is missing) and prints the table; DIR appears as a whole. Ctrl-C or
+// Writes DIR/compare.csv, DIR/<optimizer>_history.csv and DIR/compare.png (the kept design's
+// φ/φ₀ placed afresh against seconds, the followed path's φ/φ₀ against evaluations; by
+// tools/plot_compare.py, skipped with a warning when python3 or matplotlib is missing) and
+// prints the table; DIR appears as a whole. Ctrl-C or
 // SIGTERM stops the running optimiser cleanly with its best design so far and skips the rest.
 //
 // Exit status: 0 success, 1 an optimiser crashed, 2 bad input (flags, scenario),

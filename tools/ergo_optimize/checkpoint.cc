@@ -143,7 +143,8 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   Json history = Json::array(), history_timing = Json::array();
   for (const IterationRecord& r : state.history) {
     history.push_back(Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds,
-                                   r.phi, r.zeta, r.psi, r.gradient_norm, r.step}));
+                                   r.phi, r.zeta, r.psi, r.gradient_norm, r.step,
+                                   r.kept_fresh_phi}));
     history_timing.push_back(TimingJson(r.timing));
   }
   j["history"] = history;
@@ -241,7 +242,8 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
     throw InputError(path, "member \"history\"", "is not an array", "start the run afresh");
   for (const Json& entry : history) {
     const std::vector<double> h = ToVector(entry, source, "history");
-    if (h.size() != 9) throw InputError(path, "", "has a malformed history entry", "start afresh");
+    // Nine entries: a checkpoint written before kept_fresh_phi was recorded.
+    if (h.size() != 9 && h.size() != 10) throw InputError(path, "", "has a malformed history entry", "start afresh");
     IterationRecord r;
     r.iteration = static_cast<int>(h[0]);
     r.evaluations = static_cast<long>(h[1]);
@@ -252,6 +254,7 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
     r.psi = h[6];
     r.gradient_norm = h[7];
     r.step = h[8];
+    if (h.size() == 10) r.kept_fresh_phi = h[9];
     state.history.push_back(r);
   }
   const Json* history_timing = FindMember(j, "history_time_split");
