@@ -8,6 +8,7 @@ Needs matplotlib (Debian: python3-matplotlib); exits 3 without it.
 """
 import csv
 import os
+import re
 import sys
 
 
@@ -47,6 +48,8 @@ def main():
         # check, ending at the run's kept design (compare.csv; its check follows the last row).
         kept = [(float(r["wall_s"]), float(r["kept_fresh_phi"]) / phi0)
                 for r in rows if r.get("kept_fresh_phi")]
+        if kept:
+            kept.insert(0, (0.0, kept[0][1]))
         if kept and run.get("final_phi") and run.get("wall_s"):
             kept.append((float(run["wall_s"]), float(run["final_phi"]) / phi0))
         if kept:
@@ -66,7 +69,9 @@ def main():
         axes.axhline(0.3, color="grey", linestyle=":", linewidth=1)  # 70 % reduction
         axes.grid(True, which="both", alpha=0.3)
     by_time.legend(fontsize="small")
-    fig.suptitle("ergo_compare: " + os.path.basename(os.path.abspath(out_dir)))
+    # ergo_compare plots into its temporary folder (DIR.tmp-PID) before it renames it to DIR.
+    name = re.sub(r"\.tmp-\d+$", "", os.path.basename(os.path.abspath(out_dir)))
+    fig.suptitle("ergo_compare: " + name)
     fig.tight_layout()
     target = os.path.join(out_dir, "compare.png")
     temporary = target + ".tmp.%d.png" % os.getpid()
