@@ -31,6 +31,10 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
   const double initial_phi =
       resume && !resume->history.empty() ? resume->history.front().phi : phi0_fresh;
 
+  // The mean wall time of a fresh check, to keep the checks inside a time budget.
+  double check_seconds = options.fresh_score_seconds;
+  int checks_timed = 0;
+
   while (!state.finished) {
     const long remaining = budget.max_evaluations - state.evaluations;
     // A small budget keeps most of itself for the optimiser: at most a quarter for checks.
@@ -45,9 +49,10 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
       state.stop_reason = "interrupted";
       break;  // not finished: a resume continues from here
     }
-    if (budget.max_seconds > 0 && seconds() >= budget.max_seconds) {
+    // The round needs time for at least one evaluation besides its checks.
+    if (budget.max_seconds > 0 && seconds() + (checks + 1) * check_seconds >= budget.max_seconds) {
       state.finished = true;
-      state.stop_reason = "budget: " + std::to_string(budget.max_seconds) + " s";
+      state.stop_reason = TimeBudgetReason(budget.max_seconds);
       break;
     }
     // One round: the optimiser on its own path from the kept design, leaving room for the
@@ -57,7 +62,8 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
         std::max<long>(1, options.round_evaluations > 0
                               ? std::min<long>(options.round_evaluations, remaining - checks)
                               : remaining - checks));
-    if (budget.max_seconds > 0) round.max_seconds = std::max(1e-3, budget.max_seconds - seconds());
+    if (budget.max_seconds > 0)
+      round.max_seconds = std::max(1e-3, budget.max_seconds - seconds() - checks * check_seconds);
     RunControl round_control = control;
     const long used_before = state.evaluations, newton_before = state.newton_iterations;
     const EvaluationTiming timing_before = state.timing;
@@ -96,7 +102,14 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     for (size_t c = 0; c < r.candidates.size() && static_cast<int>(phi.size()) < checks; ++c) {
       if (control.stop && control.stop->load()) break;
       if (r.candidates[c] == state.kept_x) continue;  // the round's start
+      // Past the time budget only the round's best is checked (else the round is lost).
+      if (!phi.empty() && budget.max_seconds > 0 && seconds() + check_seconds > budget.max_seconds)
+        break;
+      const double check_start = seconds();
       const double value = problem.fresh_score(r.candidates[c], &state.timing);
+      check_seconds =
+          (check_seconds * checks_timed + (seconds() - check_start)) / (checks_timed + 1);
+      ++checks_timed;
       ++state.evaluations;
       phi.push_back(r.candidate_phi[c]);
       fresh.push_back(value);
@@ -132,7 +145,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     } else if (r.stop_reason.find("budget: ") == 0 &&
                r.stop_reason.find(" s") != std::string::npos) {
       state.finished = true;
-      state.stop_reason = r.stop_reason;
+      state.stop_reason = TimeBudgetReason(budget.max_seconds);  // not the round's share
     }
     state.seconds = seconds();
     if (options.on_round) options.on_round(state);

@@ -51,6 +51,10 @@ struct RoundsState {
 struct RoundsOptions {
   int round_evaluations = 0;  // evaluations per round; 0: one round with the whole budget
   int candidates = 3;         // a round's best designs placed afresh after it
+  // Under a time budget: the wall time of one fresh score as the caller measured it (φ₀'s),
+  // so that a round leaves room for its checks inside the budget; later rounds use the mean
+  // of the checks made. 0: unknown (the first round's checks may then end past the budget).
+  double fresh_score_seconds = 0;
   // Called after every round with the state a resumed run would start from (a checkpoint).
   std::function<void(const RoundsState&)> on_round;
 };

@@ -43,13 +43,6 @@ const char* ResultName(nlopt::result result) {
   }
 }
 
-std::string Format(double value) {
-  std::ostringstream out;
-  out.precision(3);
-  out << value;
-  return out.str();
-}
-
 // Shared by the rounds: evaluates through the monitor, tracks the best design in u (so a
 // round restarts at exactly the evaluated vector) and writes the history at each new best.
 struct Run {
@@ -234,7 +227,7 @@ class NloptOptimizer : public Optimizer {
         continue;
       }
       if (result == nlopt::MAXTIME_REACHED) {
-        reason = "budget: " + Format(budget.max_seconds) + " s wall";
+        reason = TimeBudgetReason(budget.max_seconds);
         break;
       }
       // Converged inside the round's box: final, unless the best touches a move limit that

@@ -10,6 +10,12 @@
 
 namespace ergo {
 
+std::string TimeBudgetReason(double max_seconds) {
+  std::ostringstream out;
+  out << "budget: " << max_seconds << " s wall";
+  return out.str();
+}
+
 double OptimizerResult::ReductionPercent() const {
   if (!ok || !(std::abs(initial_phi) > 0)) return 0.0;
   return 100.0 * (1.0 - best_phi / initial_phi);

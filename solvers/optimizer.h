@@ -103,6 +103,9 @@ struct OptimizerResult {
   std::string FullReport() const;   // one line per history entry below the brief report
 };
 
+// The stop reason of a run that used up its wall-clock budget: "budget: 300 s wall".
+std::string TimeBudgetReason(double max_seconds);
+
 class Optimizer {
  public:
   virtual ~Optimizer() = default;

@@ -19,12 +19,6 @@ bool SameDesign(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return a.size() == b.size() && (a.array() == b.array()).all();
 }
 
-std::string FormatSeconds(double seconds) {
-  std::ostringstream out;
-  out << seconds;
-  return out.str();
-}
-
 }  // namespace
 
 RunMonitor::RunMonitor(std::string optimizer, const Budget& budget, const RunControl& control)
@@ -47,7 +41,7 @@ bool RunMonitor::AdmitLocked() {
     return !StopLocked("budget: " + std::to_string(budget_.max_evaluations) + " evaluations");
   }
   if (budget_.max_seconds > 0 && Seconds() >= budget_.max_seconds)
-    return !StopLocked("budget: " + FormatSeconds(budget_.max_seconds) + " s wall");
+    return !StopLocked(TimeBudgetReason(budget_.max_seconds));
   return true;
 }
 

@@ -126,6 +126,7 @@ class DesignProblem {
   const TriMesh& initial_support() const { return initial_support_; }
   void set_gamma(double gamma) { options_.gamma = gamma; }
   void set_placement(DesignPlacement placement) { options_.placement = placement; }
+  void set_tangent_predictor(bool on) { options_.tangent_predictor = on; }
   void set_contact_stiffness(double k);
 
   // φ, ζ, ψ (and with_gradient: their gradients) at design x. Thread-compatible: one

@@ -145,15 +145,19 @@ void BM_PaperCold(benchmark::State& state, const std::string& name) {
 // A warm evaluation after the step (on a copy of the problem after the cold one, so every
 // iteration and every benchmark takes the same step).
 DesignEvaluation WarmStep(const PaperScene& s, const DesignProblem& after_cold,
-                          benchmark::State& state) {
+                          benchmark::State& state, bool predictor = true) {
   state.PauseTiming();
   DesignProblem problem(after_cold);
+  problem.set_tangent_predictor(predictor);
   state.ResumeTiming();
   return problem.Evaluate(s.x0 + s.step, true);
 }
 
-// A warm evaluation after a step; `gradient_only` times just its adjoint part (manual time).
-void PaperWarmStep(benchmark::State& state, const std::string& name, bool gradient_only) {
+// A warm evaluation after a step; `gradient_only` times just its adjoint part (manual time);
+// `predictor` = false starts Newton from the last equilibrium itself (issue 13's first lever,
+// measured against the default).
+void PaperWarmStep(benchmark::State& state, const std::string& name, bool gradient_only,
+                   bool predictor = true) {
   PaperScene& s = PaperSceneFor(name);
   const DesignProblem* after_cold = AfterCold(s);
   if (!after_cold) {
@@ -162,7 +166,7 @@ void PaperWarmStep(benchmark::State& state, const std::string& name, bool gradie
   }
   DesignEvaluation e;
   for (auto _ : state) {
-    e = WarmStep(s, *after_cold, state);
+    e = WarmStep(s, *after_cold, state, predictor);
     if (gradient_only) state.SetIterationTime(e.timing.adjoint_seconds);
   }
   ReportEvaluationCounters(state, s.scenario, e);
@@ -179,6 +183,10 @@ void BM_PaperGradient(benchmark::State& state, const std::string& name) {
   PaperWarmStep(state, name, true);
 }
 
+void BM_PaperWarmNoPredictor(benchmark::State& state, const std::string& name) {
+  PaperWarmStep(state, name, false, false);
+}
+
 // Scene by scene (each built once, kept for its three rows): BM_PaperCold/chair, ...
 const bool kPaperRowsRegistered = [] {
   for (const char* scene : {"chair", "shoe", "mouse"}) {
@@ -193,6 +201,10 @@ const bool kPaperRowsRegistered = [] {
         ->Unit(benchmark::kSecond)
         ->Iterations(1)
         ->UseManualTime();
+    benchmark::RegisterBenchmark(("BM_PaperWarmNoPredictor" + suffix).c_str(),
+                                 BM_PaperWarmNoPredictor, scene)
+        ->Unit(benchmark::kSecond)
+        ->Iterations(1);
   }
   return true;
 }();

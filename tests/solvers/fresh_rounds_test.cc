@@ -124,11 +124,66 @@ TEST(Solvers, FreshRoundsReturnTheStartWhenNothingBeatsItAfresh) {
   std::unique_ptr<Optimizer> optimizer = MakeOptimizer("steepest", {}, &error);
   Budget budget;
   budget.max_evaluations = 30;
-  const RoundsResult r = MinimizeInRounds(*optimizer, problem, x0, 0.0, budget, {}, {10, 2});
+  RoundsOptions options;
+  options.round_evaluations = 10;
+  options.candidates = 2;
+  const RoundsResult r = MinimizeInRounds(*optimizer, problem, x0, 0.0, budget, {}, options);
   EXPECT_EQ(r.kept_x, x0);
   EXPECT_EQ(r.kept_fresh_phi, 0.0);
   EXPECT_EQ(r.kept_candidate, -1);
   EXPECT_NE(r.result.stop_reason.find("placed afresh"), std::string::npos) << r.result.stop_reason;
+}
+
+// Records the budget each round is given and delegates to a real optimiser.
+class BudgetRecorder : public Optimizer {
+ public:
+  explicit BudgetRecorder(std::unique_ptr<Optimizer> inner) : inner_(std::move(inner)) {}
+  std::string name() const override { return inner_->name(); }
+  OptimizerResult Minimize(Objective& objective, const Eigen::VectorXd& x0, const Budget& budget,
+                           const RunControl& control) override {
+    round_seconds.push_back(budget.max_seconds);
+    return inner_->Minimize(objective, x0, budget, control);
+  }
+  std::vector<double> round_seconds;
+
+ private:
+  std::unique_ptr<Optimizer> inner_;
+};
+
+// Under a time budget a round leaves room for its fresh checks (the caller's estimate of one
+// check first, the measured mean after), and a budget too small for a round and its checks
+// ends the run before it starts, naming the whole budget.
+TEST(Solvers, FreshRoundsKeepTheirChecksInsideATimeBudget) {
+  auto f = std::make_shared<IllConditionedQuadratic>(6, 10, 7);
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(6);
+  const double phi0 = f->Evaluate(x0, false).phi;
+  RoundsProblem problem;
+  problem.make_objective = [&] { return std::make_unique<DriftingObjective>(f, 0.0); };
+  problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming*) {
+    return f->Evaluate(x, false).phi;
+  };
+  Budget budget;
+  budget.max_evaluations = 40;
+  budget.max_seconds = 100;
+  RoundsOptions options;
+  options.round_evaluations = 10;
+  options.candidates = 3;
+  options.fresh_score_seconds = 2;  // three checks: 6 s kept back from the first round
+  BudgetRecorder optimizer(MakeOptimizer("nlopt-lbfgs", {}, nullptr));
+  const RoundsResult r = MinimizeInRounds(optimizer, problem, x0, phi0, budget, {}, options);
+  ASSERT_GE(optimizer.round_seconds.size(), 2u);
+  // The analytic rounds take far less than 0.1 s; its checks measure about nothing.
+  EXPECT_LE(optimizer.round_seconds[0], 94.0);
+  EXPECT_GT(optimizer.round_seconds[0], 93.9);
+  EXPECT_GT(optimizer.round_seconds[1], 99.9);
+  EXPECT_LT(r.kept_fresh_phi, phi0);
+
+  options.fresh_score_seconds = 30;  // a round and its three checks need 120 s of the 100
+  BudgetRecorder idle(MakeOptimizer("nlopt-lbfgs", {}, nullptr));
+  const RoundsResult none = MinimizeInRounds(idle, problem, x0, phi0, budget, {}, options);
+  EXPECT_TRUE(idle.round_seconds.empty());
+  EXPECT_EQ(none.kept_x, x0);
+  EXPECT_EQ(none.result.stop_reason, "budget: 100 s wall");
 }
 
 }  // namespace

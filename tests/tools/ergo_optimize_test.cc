@@ -79,10 +79,9 @@ const std::vector<std::string> kTimeSplitCounts = {
 // decreasing) over the rows; summary.json's time_split holds the run's totals.
 void ExpectTimeSplit(const std::string& dir) {
   const Csv csv = ReadCsv(dir + "/history.csv");
-  const std::vector<std::string> first = {"iteration", "evaluations", "newton_iterations",
-                                          "wall_s",    "phi",         "zeta",
-                                          "psi",       "grad_norm",   "step",
-                                          "kept_fresh_phi"};
+  const std::vector<std::string> first = {
+      "iteration", "evaluations", "newton_iterations", "wall_s", "phi",
+      "zeta",      "psi",         "grad_norm",         "step",   "kept_fresh_phi"};
   ASSERT_GE(csv.header.size(), first.size());
   EXPECT_EQ(std::vector<std::string>(csv.header.begin(), csv.header.begin() + first.size()), first);
   ASSERT_FALSE(csv.rows.empty());
@@ -362,6 +361,33 @@ TEST(ToolsOptimize, AKilledRunLeavesThePreviousOutputOrNoneAndResumesToTheSameDe
     EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
   EXPECT_FALSE(fs::exists(dir + ".checkpoint.json"));
   fs::remove_all(scratch);
+}
+
+// A time budget given alone is the whole budget (no 40-evaluation default under it); with
+// --max_evals too, both hold.
+TEST(ToolsOptimize, ATimeBudgetAloneHasNoEvaluationCap) {
+  const std::string dir = testing::MakeScratchDir("time_budget");
+  const std::vector<std::string> common = {"--scenario=bump", "--bump_edge_length=0.01",
+                                           "--robust_placements=1", "--plot=false",
+                                           "--placement_checks=false"};
+  std::vector<std::string> alone = common;
+  alone.insert(alone.end(), {"--max_seconds=0.5", "--out=" + dir + "/alone"});
+  ASSERT_TRUE(RunTool(alone, dir + "/alone.log").ok()) << Read(dir + "/alone.log");
+  EXPECT_NE(Read(dir + "/alone.log").find("budget: no evaluation cap, 0.5 s wall"),
+            std::string::npos)
+      << Read(dir + "/alone.log");
+  std::vector<std::string> both = common;
+  both.insert(both.end(), {"--max_seconds=100", "--max_evals=3", "--out=" + dir + "/both"});
+  ASSERT_TRUE(RunTool(both, dir + "/both.log").ok()) << Read(dir + "/both.log");
+  EXPECT_NE(Read(dir + "/both.log").find("budget: 3 evaluations, 100 s wall"), std::string::npos)
+      << Read(dir + "/both.log");
+  EXPECT_LE(GetNumber(ReadJsonFile(dir + "/both/summary.json"), "evaluations", "summary"), 3.0);
+  std::vector<std::string> neither = common;
+  neither.insert(neither.end(), {"--max_evals=2", "--out=" + dir + "/evals"});
+  ASSERT_TRUE(RunTool(neither, dir + "/evals.log").ok()) << Read(dir + "/evals.log");
+  EXPECT_NE(Read(dir + "/evals.log").find("budget: 2 evaluations\n"), std::string::npos)
+      << Read(dir + "/evals.log");
+  fs::remove_all(dir);
 }
 
 TEST(ToolsOptimize, GeometricBaselinesAreScoredAndWrittenLikeAnyDesign) {

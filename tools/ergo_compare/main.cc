@@ -19,6 +19,7 @@
 // 130 / 143 interrupted (outputs are still written).
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -34,6 +35,7 @@
 
 #include "ergo/design/placement_checks.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/seconds_since.h"
 #include "ergo/mesh/split_list.h"
 #include "solvers/design_objective.h"
 #include "solvers/fresh_rounds.h"
@@ -272,10 +274,14 @@ int Compare() {
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
     return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing);
   };
+  const auto fresh_start = std::chrono::steady_clock::now();
   const double phi0 = robust.size() > 1 ? rounds_problem.fresh_score(x0, nullptr) : start.phi;
   RoundsOptions rounds_options;
   rounds_options.round_evaluations = FLAGS_round_evals;
   rounds_options.candidates = FLAGS_candidates;
+  // The time of one fresh score, so a time budget keeps room for the rounds' checks.
+  rounds_options.fresh_score_seconds =
+      robust.size() > 1 ? SecondsSince(fresh_start) : start.timing.total_seconds;
 
   std::vector<OptimizerResult> results;
   bool crashed = false;

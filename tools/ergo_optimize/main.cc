@@ -65,8 +65,10 @@ DEFINE_double(baseline_smoothness, 1,
               "both baselines: weight of the support's smoothness against the fit to the body");
 DEFINE_int32(max_evals, 40,
              "budget: φ evaluations (each an equilibrium per placement of the objective), probes "
-             "and fresh checks included");
-DEFINE_double(max_seconds, 0, "budget: wall seconds; 0 = unlimited");
+             "and fresh checks included; with --max_seconds and no --max_evals, no cap");
+DEFINE_double(max_seconds, 0,
+              "budget: wall seconds of the optimisation, its fresh checks included (the "
+              "placement checks and the outputs follow it); 0 = unlimited");
 DEFINE_string(out, "ergo_out", "output directory (created if missing; replaced as a whole)");
 DEFINE_int32(post_smoothing, 0,
              "Taubin iterations applied to the optimised design's designed region (paper §5.1; "
@@ -96,6 +98,9 @@ DEFINE_double(placement_tilt_deg, 1,
 
 namespace ergo {
 namespace {
+
+// The evaluation budget of a run governed by its time budget alone (the flag's upper bound).
+constexpr int kNoEvaluationCap = 1000000;
 
 // Every flag of this tool checked before any work (the scene's and the problem's are checked
 // where they are read, also before any computation).
@@ -262,15 +267,28 @@ int Run() {
     return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing);
   };
   double phi0_objective = phi0;
+  double fresh_score_seconds = first.timing.total_seconds;  // to keep the checks in the budget
   if (robust.size() > 1) {
+    const auto fresh_start = std::chrono::steady_clock::now();
     phi0_objective = rounds_problem.fresh_score(x0, nullptr);
+    fresh_score_seconds = SecondsSince(fresh_start);
     std::cout << "objective: mean over " << robust.size() << " placements; at x₀ " << phi0_objective
               << "\n";
   }
 
   Budget budget;
-  budget.max_evaluations = FLAGS_max_evals;
+  // A time budget given alone is the budget: the 40-evaluation default is for runs without one.
+  const bool evaluations_given = !gflags::GetCommandLineFlagInfoOrDie("max_evals").is_default;
+  budget.max_evaluations =
+      FLAGS_max_seconds > 0 && !evaluations_given ? kNoEvaluationCap : FLAGS_max_evals;
   budget.max_seconds = FLAGS_max_seconds;
+  std::cout << "budget: ";
+  if (budget.max_evaluations == kNoEvaluationCap)
+    std::cout << "no evaluation cap";
+  else
+    std::cout << budget.max_evaluations << " evaluations";
+  if (FLAGS_max_seconds > 0) std::cout << ", " << FLAGS_max_seconds << " s wall";
+  std::cout << "\n";
   RunControl control;
   control.stop = &StopOnSignals::flag();
   double best = phi0_objective;
@@ -279,8 +297,8 @@ int Run() {
     if (FLAGS_progress) {
       const double per_eval =
           r.evaluations > 0 ? r.seconds / static_cast<double>(r.evaluations) : 0;
-      double eta = per_eval * static_cast<double>(
-                                  std::max(0L, static_cast<long>(FLAGS_max_evals) - r.evaluations));
+      double eta = per_eval * static_cast<double>(std::max(
+                                  0L, static_cast<long>(budget.max_evaluations) - r.evaluations));
       if (FLAGS_max_seconds > 0) eta = std::min(eta, std::max(0.0, FLAGS_max_seconds - r.seconds));
       std::printf("iter %4d  φ/φ₀ %.4f  best %.4f  evals %4ld  elapsed %6.1f s  ETA %6.1f s\n",
                   r.iteration, r.phi / phi0_objective, best / phi0_objective, r.evaluations,
@@ -292,6 +310,7 @@ int Run() {
   RoundsOptions rounds_options;
   rounds_options.round_evaluations = FLAGS_round_evals;
   rounds_options.candidates = FLAGS_candidates;
+  rounds_options.fresh_score_seconds = fresh_score_seconds;
   // Checkpoints after rounds (a round depends only on its start: resumable exactly).
   const std::string checkpoint = CheckpointPath(output.final_path());
   const std::string fingerprint = RunFingerprint();
