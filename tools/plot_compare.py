@@ -55,11 +55,15 @@ def main():
         if kept:
             by_time.step([t for t, _ in kept], [v for _, v in kept], where="post",
                          color=color, label=name)
+        # Beside it, faint: the optimiser's own value against the same clock (a run in one
+        # round is placed afresh only at its end).
+        by_time.plot([float(r["wall_s"]) for r in rows], [float(r["phi"]) / phi0 for r in rows],
+                     color=color, linestyle="--", linewidth=0.8, alpha=0.5)
         # Right: the optimiser's own path (its equilibria followed from one design to the next).
         by_evals.plot([int(r["evaluations"]) for r in rows],
                       [float(r["phi"]) / phi0 for r in rows], marker=".", color=color,
                       label=name)
-    by_time.set_title("kept design placed afresh")
+    by_time.set_title("kept design placed afresh (dashed: the optimiser's own value)")
     by_evals.set_title("the optimiser's own path (followed equilibria)")
     for axes, label in ((by_time, "wall clock, s"),
                         (by_evals, "phi evaluations (equilibrium solves)")):
