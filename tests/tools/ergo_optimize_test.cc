@@ -390,6 +390,29 @@ TEST(ToolsOptimize, ATimeBudgetAloneHasNoEvaluationCap) {
   fs::remove_all(dir);
 }
 
+// The default optimiser is nlopt-lbfgs, ceres-lbfgs at the paper presets (the paper-resolution
+// comparison in the README), and what --optimizer names in either case.
+TEST(ToolsOptimize, ThePaperPresetDefaultsToCeresLbfgsUnlessAnOptimizerIsNamed) {
+  const std::string dir = testing::MakeScratchDir("default_optimizer");
+  const std::vector<std::string> common = {"--scenario=bump",          "--bump_edge_length=0.01",
+                                           "--robust_placements=1",    "--plot=false",
+                                           "--placement_checks=false", "--max_evals=2"};
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{}, "nlopt-lbfgs"},
+      {{"--preset=paper"}, "ceres-lbfgs"},
+      {{"--preset=paper", "--optimizer=nlopt-mma"}, "nlopt-mma"}};
+  for (size_t i = 0; i < cases.size(); ++i) {
+    std::vector<std::string> arguments = common;
+    arguments.insert(arguments.end(), cases[i].first.begin(), cases[i].first.end());
+    const std::string out = dir + "/" + std::to_string(i);
+    arguments.push_back("--out=" + out);
+    ASSERT_TRUE(RunTool(arguments, out + ".log").ok()) << Read(out + ".log");
+    EXPECT_EQ(GetString(ReadJsonFile(out + "/summary.json"), "optimizer", "summary"),
+              cases[i].second);
+  }
+  fs::remove_all(dir);
+}
+
 TEST(ToolsOptimize, GeometricBaselinesAreScoredAndWrittenLikeAnyDesign) {
   const std::string dir = testing::MakeScratchDir("baseline");
   for (const std::string designer : {"sit-and-relax", "pose-to-seat"}) {
