@@ -20,7 +20,8 @@ std::string CsvField(const std::string& text) {
 
 void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
   WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step,kept_fresh_phi";
+    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step,kept_fresh_"
+           "phi";
     // The time split's columns; its newton_iterations is the column above already.
     ForEachTimingEntry(
         EvaluationTiming(), [&](const char* name, double) { out << ',' << name; },

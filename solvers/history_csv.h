@@ -2,8 +2,8 @@
 // per run — iteration, evaluations, newton_iterations, wall_s, phi, zeta, psi, grad_norm
 // (empty where ∇φ was not evaluated), step (largest vertex move from the previous iterate,
 // m), kept_fresh_phi (runs in fresh rounds: the score afresh of the design kept at that row;
-// empty for other runs), then the time split of the evaluations (ergo/design/evaluation_timing.h) — and the
-// comparison table of several runs on one problem.
+// empty for other runs), then the time split of the evaluations (ergo/design/evaluation_timing.h) —
+// and the comparison table of several runs on one problem.
 //
 // The time-split columns are cumulative since the start of the run, like `evaluations` and
 // `wall_s`, and cover the same evaluations as `evaluations` (probes, failures and fresh

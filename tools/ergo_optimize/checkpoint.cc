@@ -142,9 +142,9 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   j["stop_reason"] = state.stop_reason;
   Json history = Json::array(), history_timing = Json::array();
   for (const IterationRecord& r : state.history) {
-    history.push_back(Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds,
-                                   r.phi, r.zeta, r.psi, r.gradient_norm, r.step,
-                                   r.kept_fresh_phi}));
+    history.push_back(
+        Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds, r.phi, r.zeta,
+                     r.psi, r.gradient_norm, r.step, r.kept_fresh_phi}));
     history_timing.push_back(TimingJson(r.timing));
   }
   j["history"] = history;
@@ -243,7 +243,8 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
   for (const Json& entry : history) {
     const std::vector<double> h = ToVector(entry, source, "history");
     // Nine entries: a checkpoint written before kept_fresh_phi was recorded.
-    if (h.size() != 9 && h.size() != 10) throw InputError(path, "", "has a malformed history entry", "start afresh");
+    if (h.size() != 9 && h.size() != 10)
+      throw InputError(path, "", "has a malformed history entry", "start afresh");
     IterationRecord r;
     r.iteration = static_cast<int>(h[0]);
     r.evaluations = static_cast<long>(h[1]);
