@@ -9,8 +9,10 @@
 #include "ergo/body/body_directory.h"
 #include "ergo/body/layer_builder.h"
 #include "ergo/body/sample_interpolation.h"
+#include "ergo/body/tissue_fields.h"
 #include "ergo/contact/support.h"
 #include "ergo/equilibrium/placement.h"
+#include "ergo/mesh/axis_map.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
@@ -179,15 +181,32 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
           "depth and Young's modulus must be positive and Poisson's ratio in (-1, 0.5)",
           "e.g. depth 0.02 m, E 1e4 Pa, nu 0.45");
     }
+    TissueFieldInputs inputs;
+    inputs.anatomy = input.anatomy;
+    const double edge_length = input.edge_length > 0 ? input.edge_length : default_edge_length;
+    inputs.anatomy.min_depth = std::max(inputs.anatomy.min_depth, edge_length);
+    if (input.anatomy.anatomy == Anatomy::kNone && input.depth_csv.empty())
+      inputs.depth = input.depth;
+    inputs.depth_samples = input.depth_csv;
+    if (input.anatomy.anatomy == Anatomy::kNone && input.stiffness_csv.empty())
+      inputs.youngs_modulus = input.youngs_modulus;
+    inputs.stiffness_samples = input.stiffness_csv;
+    inputs.unit = input.unit;
+    inputs.axes = ParseAxisMap(input.axes, "--skin_axes");
+    inputs.depth_flag = "skin_depth";
+    inputs.depth_samples_flag = "depth_csv";
+    inputs.modulus_flag = "skin_youngs_modulus";
+    inputs.modulus_samples_flag = "stiffness_csv";
     ReadOptions read;
     read.unit = input.unit;
-    const TriMesh skin = ReadTriMesh(input.skin_surface, read);
-    const SampleInterpolant depth =
-        Field(input.depth_csv, input.depth, input.unit, true, "depth", "m");
-    const SampleInterpolant stiffness = Field(input.stiffness_csv, input.youngs_modulus, input.unit,
-                                              false, "Young's modulus", "Pa");
+    TriMesh skin = ReadTriMesh(input.skin_surface, read);
+    ApplyAxisMap(inputs.axes, &skin.vertices);
+    const TissueFields fields = MakeTissueFields(skin, inputs, input.skin_surface);
+    const SampleInterpolant& depth = fields.depth;
+    const SampleInterpolant& stiffness = fields.youngs_modulus;
     BuilderOptions builder;
-    builder.edge_length = input.edge_length > 0 ? input.edge_length : default_edge_length;
+    builder.edge_length = edge_length;
+    if (fields.priors) builder.core_limit = fields.priors->core_limit;
     const BuiltLayer built = BuildLayerFromSurface(skin, depth, builder, input.skin_surface);
     TissueMaterial material;
     material.youngs_modulus = InterpolateOntoTets(built, stiffness);
@@ -198,6 +217,7 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
         LayeredBody::Create(built.mesh, built.attached, material, options, input.skin_surface));
     line << "user skin " << input.skin_surface << " (depth " << depth.Describe() << ", E "
          << stiffness.Describe() << ")";
+    if (fields.priors) line << "; anatomical priors: " << fields.priors->summary;
   }
   line << ": " << body->rest().vertices.rows() << " vertices, " << body->rest().tets.rows()
        << " tets, mass " << body->total_mass() << " kg";

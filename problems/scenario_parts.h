@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ergo/body/anatomical_priors.h"
 #include "ergo/body/body_state.h"
 #include "ergo/body/layered_body.h"
 #include "ergo/mesh/length_unit.h"
@@ -36,6 +37,11 @@ struct UserBodyInput {
   double poisson_ratio = 0.45;
   double edge_length = 0;  // m; 0 = the scenario's body edge length
   double total_mass = -1;  // kg; negative = core volume × 1050 kg/m³
+  // Skin surface only: anatomical priors instead of the constants `depth` and
+  // `youngs_modulus` (the CSVs then replace them near their points), and the rotation from
+  // the scan's axes to ergo's (ergo/mesh/axis_map.h).
+  AnatomyOptions anatomy;
+  std::string axes = "x,y,z";
   bool empty() const { return body_directory.empty() && tet_mesh.empty() && skin_surface.empty(); }
 };
 

@@ -1,12 +1,17 @@
 #include "problems/shoe_scenario.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <sstream>
+#include <vector>
 
 #include "ergo/body/core_lock.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
+#include "problems/load_point.h"
+#include "problems/outline_sole.h"
 #include "problems/profile_block.h"
 
 namespace ergo {
@@ -30,11 +35,12 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   ScenarioBuildReport& r = report != nullptr ? *report : local;
   if (!(o.body_edge_length > 0) || !(o.contact_stiffness > 0) || !(o.free_fall_mass_scale > 0) ||
       !(o.start_gap >= 0) || !(o.body_mass >= 0) || !(o.load_fraction >= 0) ||
-      !(o.sole_thickness > 0) || !(o.sole_margin >= 0) || !std::isfinite(o.lean_torque)) {
+      !(o.sole_thickness > 0) || !(o.sole_margin >= 0) || !std::isfinite(o.lean_torque) ||
+      (o.load_point && !(*o.load_point >= 0 && *o.load_point <= 1))) {
     throw InputError("shoe scenario", "options",
                      "edge length, stiffness, free-fall scale and sole thickness must be "
                      "positive; gap, margin, body mass and load fraction non-negative; the "
-                     "torque finite",
+                     "torque finite; the load point in [0, 1]",
                      "check the shoe options");
   }
   Scenario scenario;
@@ -47,13 +53,34 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   scenario.body = MakeScenarioBody(
       "foot", [&] { return MakeFootSpec(o.foot); }, o.body_edge_length, o.sliver_bound_degrees,
       o.user_body, load, &r);
+  if (o.load_point) {
+    const Eigen::Vector3d torque =
+        load.external_torque +
+        LoadPointTorque(*scenario.body, load.external_force, *o.load_point,
+                        o.user_body.empty() ? HeelEnd::kMinZ : o.user_body.anatomy.heel_end,
+                        "shoe load point");
+    auto loaded = std::make_shared<LayeredBody>(*scenario.body);
+    loaded->SetExternalWrench(load.external_force, torque);
+    scenario.body = loaded;
+  }
 
   // The sole: the foot's outline (x, z) grown by the margin, top at y = 0.
   auto start = std::chrono::steady_clock::now();
   const bool generated_sole = o.user_support.empty();
   ProfileBlock sole;
   double shift_x = 0;
-  if (generated_sole) {
+  std::vector<bool> outline_top;
+  if (generated_sole && o.footprint_outline) {
+    OutlineSoleOptions outline;
+    outline.margin = o.sole_margin;
+    outline.thickness = o.sole_thickness;
+    outline.top_spacing = o.sole_top_spacing;
+    outline.wall_spacing = std::max(o.sole_wall_spacing, o.sole_top_spacing);
+    const LayeredBody& body = *scenario.body;
+    OutlineSole fitted = MakeOutlineSole(body.skin().RestSurface(body.rest().vertices), outline);
+    scenario.support = std::move(fitted.mesh);
+    outline_top = std::move(fitted.top);
+  } else if (generated_sole) {
     const Vertices& rest = scenario.body->rest().vertices;
     const Eigen::RowVector3d lo = rest.colwise().minCoeff(), hi = rest.colwise().maxCoeff();
     shift_x = 0.5 * (lo.x() + hi.x());
@@ -84,14 +111,22 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
     UseNegativeImage(o.negative, o.start_gap, &scenario, &r);
   }
   std::vector<bool> active =
-      generated_sole
-          ? ActiveWhere(scenario.support,
-                        [&](const Eigen::Vector3d& p) {
-                          return OnProfileBlockTop(sole, p - Eigen::Vector3d(shift_x, 0, 0));
-                        })
-          : ActiveByRule(scenario.support, o.user_support.active, o.user_support.min_normal_y);
+      generated_sole && o.footprint_outline
+          // The top's vertices; after a negative image (remeshed), the upward-facing ones.
+          ? (o.negative_image ? ActiveByRule(scenario.support, ActiveRule::kUpwardFacing, 0.5)
+                              : outline_top)
+          : generated_sole
+                ? ActiveWhere(scenario.support,
+                              [&](const Eigen::Vector3d& p) {
+                                return OnProfileBlockTop(sole, p - Eigen::Vector3d(shift_x, 0, 0));
+                              })
+                : ActiveByRule(scenario.support, o.user_support.active,
+                               o.user_support.min_normal_y);
   std::ostringstream support;
-  if (generated_sole) {
+  if (generated_sole && o.footprint_outline) {
+    support << "fitted sole: the footprint + " << o.sole_margin << " m, " << o.sole_thickness
+            << " m thick, top spacing " << o.sole_top_spacing << " m";
+  } else if (generated_sole) {
     support << "sole " << sole.width << " x " << o.sole_thickness << " x "
             << sole.front_z - sole.back_z << " m, top spacing " << o.sole_top_spacing << " m";
   } else {
@@ -99,7 +134,9 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   }
   std::ostringstream description;
   description << "shoe sole (" << o.preset << (o.negative_image ? ", negative image" : ", flat")
-              << ", lean " << o.lean_torque << " N m)";
+              << ", lean " << o.lean_torque << " N m";
+  if (o.load_point) description << ", load at " << 100 * *o.load_point << " % from the heel";
+  description << ")";
   FinishScenario(description.str(), support.str(), o.contact_stiffness, o.free_fall_mass_scale,
                  o.design_space, std::move(active), &scenario, &r);
   return scenario;

@@ -6,6 +6,7 @@
 // Presets "quick" and "paper" (≥ 10k body vertices). SI units; y up, the foot along +z.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "problems/foot_body.h"
@@ -23,6 +24,9 @@ struct ShoeScenarioOptions {
   // The sole: a slab whose top (y = 0) extends `sole_margin` beyond the foot's outline on
   // every side (0.28 × 0.12 m for the default foot), `sole_thickness` deep.
   double sole_thickness = 0.02, sole_margin = 0.01;  // m
+  // The sole's outline: a rectangle, or the foot's footprint grown by sole_margin (a fitted
+  // insole, problems/outline_sole.h; its STL prints as the insole).
+  bool footprint_outline = false;
   // Edge lengths, m. The top matches the foot's skin edges (see ChairScenarioOptions::block:
   // measured on the quick shoe at 5 mm, the optimised φ was 68 % lower on the equilibrium the
   // optimiser followed but 80 % higher when the foot was placed afresh; at 10 mm 55 % / 52 %).
@@ -32,6 +36,11 @@ struct ShoeScenarioOptions {
   // besides the foot's own weight; and lean_torque about +x (N·m; > 0 leans forward,
   // loading the toes; keep |torque| ≲ load × 8 cm so the centre of pressure stays on the sole).
   double body_mass = 75, load_fraction = 0.5, lean_torque = 0;
+  // Where the load's line of action meets the sole, as a fraction of the foot's length from
+  // the heel (quiet standing: the centre of pressure lies at 44.5 ± 5.5 % of the foot's
+  // length, Teranishi et al. 2013); turned into a pitch torque on the core, added to
+  // lean_torque. Unset: through the core's centre.
+  std::optional<double> load_point;
   bool negative_image = false;
   NegativeImageOptions negative{0.01, 0, 3, 0.006, 10, 0.5, 0.001};
   std::string lock = "tx,tz,ry,rz";  // vertical translation and pitch (about x) only

@@ -1,5 +1,6 @@
 #include "ergo/body/body_build.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,8 @@
 #include "ergo/body/layer_builder.h"
 #include "ergo/body/layered_body.h"
 #include "ergo/body/sample_interpolation.h"
+#include "ergo/body/tissue_fields.h"
+#include "ergo/mesh/axis_map.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/seconds_since.h"
@@ -25,23 +28,6 @@ void RequirePositive(const std::string& option, double value, const std::string&
     OptionError(option, "must be a positive number (got " + std::to_string(value) + ")",
                 "give e.g. --" + option + "=" + example);
   }
-}
-
-SampleInterpolant DepthField(const BodyBuildOptions& options) {
-  if (options.depth.has_value() == !options.depth_samples.empty()) {
-    OptionError("depth", "give exactly one of --depth and --depth_samples",
-                "e.g. --depth=0.02 for a 2 cm layer");
-  }
-  if (!options.depth_samples.empty()) {
-    SampleCsvOptions csv;
-    csv.unit = options.unit;
-    csv.value_is_length = true;
-    csv.value_name = "depth";
-    csv.value_unit = options.unit == LengthUnit::kMillimetre ? "mm" : "m";
-    return SampleInterpolant::Fit(ReadPointSamplesCsv(options.depth_samples, csv));
-  }
-  RequirePositive("depth", *options.depth, "0.02");
-  return SampleInterpolant::Constant(*options.depth);
 }
 
 SampleInterpolant StiffnessField(const BodyBuildOptions& options) {
@@ -141,31 +127,63 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   options.facet_distance = body.facet_distance;
   options.seed = static_cast<unsigned>(body.seed);
   options.progress = say;
-  const SampleInterpolant stiffness = StiffnessField(body);
-
   Json source = Json::object();
   BuiltLayer built;
   std::ostringstream report;
+  std::optional<SampleInterpolant> stiffness;
   if (!body.surface.empty()) {
-    const SampleInterpolant depth = DepthField(body);
+    TissueFieldInputs inputs;
+    inputs.anatomy = body.anatomy;
+    inputs.anatomy.min_depth = std::max(inputs.anatomy.min_depth, body.edge_length);
+    inputs.depth = body.depth;
+    inputs.depth_samples = body.depth_samples;
+    inputs.youngs_modulus = body.youngs_modulus;
+    inputs.stiffness_samples = body.stiffness_samples;
+    inputs.unit = body.unit;
+    inputs.axes = ParseAxisMap(body.axes, "--axes");
     say("reading " + body.surface);
     ReadOptions read;
     read.unit = body.unit;
-    const TriMesh skin = ReadTriMesh(body.surface, read);
+    TriMesh skin = ReadTriMesh(body.surface, read);
+    ApplyAxisMap(inputs.axes, &skin.vertices);
+    TissueFields fields = MakeTissueFields(skin, inputs, body.surface);
+    stiffness = fields.youngs_modulus;
     source["mode"] = "surface";
     source["surface"] = body.surface;
     source["unit"] = body.unit == LengthUnit::kMillimetre ? "mm" : "m";
-    source["depth"] = body.depth_samples.empty() ? Json(*body.depth) : Json(body.depth_samples);
-    source["depth_interpolation"] = depth.Describe();
+    source["axes"] = body.axes;
+    source["depth"] = body.depth ? Json(*body.depth) : Json(fields.depth_description);
+    source["depth_interpolation"] = fields.depth.Describe();
+    if (fields.priors) {
+      source["anatomy"] = AnatomyName(body.anatomy.anatomy);
+      source["anatomy_summary"] = fields.priors->summary;
+      Json landmarks = Json::array();
+      for (const Landmark& mark : fields.priors->landmarks) {
+        Json entry = Json::object();
+        entry["name"] = mark.name;
+        entry["point_m"] = Json::array({mark.point.x(), mark.point.y(), mark.point.z()});
+        entry["depth_m"] = mark.depth;
+        entry["youngs_modulus_pa"] = mark.youngs_modulus;
+        landmarks.push_back(entry);
+      }
+      source["landmarks"] = landmarks;
+      report << "anatomical priors: " << fields.priors->summary << "\n";
+    }
     report << "building from " << body.surface << " (" << skin.vertices.rows() << " vertices, "
-           << skin.triangles.rows() << " triangles), depth " << depth.Describe() << " m\n";
-    built = BuildLayerFromSurface(skin, depth, options, body.surface);
+           << skin.triangles.rows() << " triangles), depth " << fields.depth.Describe() << " m\n";
+    if (fields.priors) options.core_limit = fields.priors->core_limit;
+    built = BuildLayerFromSurface(skin, fields.depth, options, body.surface);
+    source["youngs_modulus"] =
+        body.youngs_modulus ? Json(*body.youngs_modulus) : Json(fields.modulus_description);
   } else {
+    if (body.anatomy.anatomy != Anatomy::kNone || body.axes != "x,y,z")
+      OptionError("anatomy", "--anatomy and --axes need a scanned --surface", "drop them");
+    stiffness = StiffnessField(body);
     built = BuildShape(body, options, &source);
+    source["youngs_modulus"] =
+        body.stiffness_samples.empty() ? Json(*body.youngs_modulus) : Json(body.stiffness_samples);
   }
-  source["youngs_modulus"] =
-      body.stiffness_samples.empty() ? Json(*body.youngs_modulus) : Json(body.stiffness_samples);
-  source["youngs_modulus_interpolation"] = stiffness.Describe();
+  source["youngs_modulus_interpolation"] = stiffness->Describe();
   source["edge_length_m"] = body.edge_length;
   source["seed"] = body.seed;
 
@@ -173,7 +191,7 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   BodyRecord& record = result.record;
   record.rest = built.mesh;
   record.attached = built.attached;
-  record.material.youngs_modulus = InterpolateOntoTets(built, stiffness);
+  record.material.youngs_modulus = InterpolateOntoTets(built, *stiffness);
   record.material.poisson_ratio =
       Eigen::VectorXd::Constant(built.mesh.tets.rows(), body.poisson_ratio);
   record.material.compression_resistance = body.compression_resistance;

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include "ergo/body/anatomical_priors.h"
 #include "ergo/body/body_directory.h"
 #include "ergo/mesh/length_unit.h"
 
@@ -39,6 +40,11 @@ struct BodyBuildOptions {
   // Young's modulus: a constant (Pa) or samples x,y,z,E (CSV).
   std::optional<double> youngs_modulus;
   std::string stiffness_samples;
+  // Surface input only: anatomical priors for depth and E (anatomical_priors.h; the samples
+  // above then replace the priors near them), and the rotation from the scan's axes to
+  // ergo's (axis_map.h: "y,z,x" for a scan with z up and its length along x).
+  AnatomyOptions anatomy;
+  std::string axes = "x,y,z";
   double poisson_ratio = 0.45;
   double density = 1050;                // tissue, kg/m³
   double core_mass = -1;                // kg; negative = core volume × core_density

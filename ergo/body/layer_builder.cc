@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <utility>
@@ -424,7 +425,17 @@ BuiltLayer MeshLayer(const ImplicitLayer& layer, const BuilderOptions& options,
     skin_face[f] = !core_face[f];
   }
   built.skin_surface = FacesOf(boundary, skin_face);
-  const SurfaceDistance core_distance(FacesOf(boundary, core_face));
+  std::unique_ptr<SurfaceDistance> core_surface;
+  try {
+    core_surface = std::make_unique<SurfaceDistance>(FacesOf(boundary, core_face));
+  } catch (const InputError& error) {
+    throw InputError(source, "core surface",
+                     "the meshed core surface is not a manifold (" + error.problem() +
+                         "): somewhere the core is thinner than the mesh resolves (a depth "
+                         "near half the part's thickness)",
+                     "use a smaller edge length, or a smaller depth where the part is thin");
+  }
+  const SurfaceDistance& core_distance = *core_surface;
   double thickness_sum = 0;
   report.min_thickness = std::numeric_limits<double>::infinity();
   Eigen::Vector3d thinnest = Eigen::Vector3d::Zero();
@@ -536,14 +547,17 @@ BuiltLayer BuildLayerFromSurface(const TriMesh& skin, const SampleInterpolant& d
   ImplicitLayer layer;
   const SurfaceDistance* d = distance.get();
   layer.outer = [d](const Eigen::Vector3d& p) { return d->Signed(p); };
-  layer.core = [d, &depth](const Eigen::Vector3d& p) {
+  const ImplicitFunction limit = options.core_limit;
+  layer.core = [d, &depth, limit](const Eigen::Vector3d& p) {
     SurfaceDistance::Closest closest;
     const double signed_distance = d->Signed(p, &closest);
-    return signed_distance + depth(closest.point);
+    const double eroded = signed_distance + depth(closest.point);
+    return limit ? std::max(eroded, limit(p)) : eroded;  // CSG intersection
   };
   const double max_depth = depth.max_value();
-  layer.region = [d, &depth, max_depth](const Eigen::Vector3d& p) {
+  layer.region = [d, &depth, max_depth, limit](const Eigen::Vector3d& p) {
     if (!d->Inside(p)) return static_cast<int>(kOutsideRegion);
+    if (limit && limit(p) >= 0) return static_cast<int>(kLayerRegion);
     // Farther from the skin than the deepest depth: core, without a closest-point search.
     const std::optional<SurfaceDistance::Closest> closest = d->NearestWithin(p, max_depth);
     if (!closest) return static_cast<int>(kCoreRegion);

@@ -33,6 +33,10 @@ struct BuilderOptions {
   // Optional local target edge length h(p) ≤ edge_length, m: refines where it matters
   // (e.g. around a contact). The thickness checks still use edge_length.
   std::function<double(const Eigen::Vector3d&)> edge_length_field;
+  // Surface input, optional: the core is also cut to {core_limit < 0} (a signed implicit,
+  // metres): where the part has no bones (a foot's toes), a clean cut rather than a depth
+  // that thins the core to nothing (thin core slivers pinch the mesh).
+  ImplicitFunction core_limit;
   double facet_distance = 0;        // m; 0 = edge_length / 10
   double facet_angle_degrees = 25;  // Mesh_3 facet_angle
   double radius_edge_ratio = 2.0;   // Mesh_3 cell_radius_edge_ratio

@@ -47,7 +47,11 @@ std::string Trim(std::string_view text) {
 }
 
 std::string Where(const PointSamples& samples, int i) {
-  if (i < static_cast<int>(samples.lines.size())) return "line " + std::to_string(samples.lines[i]);
+  if (i < static_cast<int>(samples.lines.size())) {
+    // Line 0: a sample that came from no file (an anatomical prior merged with the file's).
+    if (samples.lines[i] > 0) return "line " + std::to_string(samples.lines[i]);
+    return "prior sample " + std::to_string(i);
+  }
   return "sample " + std::to_string(i);
 }
 

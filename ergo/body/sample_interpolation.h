@@ -19,7 +19,8 @@ namespace ergo {
 struct PointSamples {
   Vertices points;         // #S x 3, metres
   Eigen::VectorXd values;  // #S
-  std::vector<int> lines;  // 1-based source line of each sample (empty if not from a file)
+  std::vector<int> lines;  // 1-based source line of each sample, 0 for one from no file
+                           // (empty if none came from a file)
   std::string source;      // file name, for messages
 };
 

@@ -11,6 +11,7 @@
 
 #include "ergo/mesh/cgal_surface_mesh.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/split_non_manifold_vertices.h"
 
 namespace ergo {
 namespace {
@@ -62,12 +63,13 @@ struct SurfaceDistance::Impl {
 
 SurfaceDistance::SurfaceDistance(const TriMesh& surface) : impl_(std::make_unique<Impl>()) {
   CHECK_GT(surface.triangles.rows(), 0) << "SurfaceDistance needs a non-empty surface";
-  // Faces keep the input order (face index == triangle index). The surface was checked for
-  // manifoldness before it got here, so a triangle that cannot be added is a bug.
+  // Faces keep the input order (face index == triangle index). A layer's core surface can
+  // pinch to a vertex shared by two fans (where the depth reaches through the part): such
+  // vertices are split, which moves nothing. Anything else non-manifold is refused.
   try {
     impl_->mesh = ToSurfaceMesh<Point>(surface, "SurfaceDistance");
-  } catch (const InputError& error) {
-    LOG(FATAL) << error.what();
+  } catch (const InputError&) {
+    impl_->mesh = ToSurfaceMesh<Point>(SplitNonManifoldVertices(surface), "surface");
   }
   Mesh& mesh = impl_->mesh;
   impl_->tree = std::make_unique<Tree>(faces(mesh).first, faces(mesh).second, mesh);

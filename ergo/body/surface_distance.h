@@ -22,7 +22,9 @@ class SurfaceDistance {
   };
 
   // Builds the trees. The surface should be closed for Inside() and Signed() to be
-  // meaningful (parity of ray crossings); Closest() works on any surface.
+  // meaningful (parity of ray crossings); Closest() works on any surface. Pinched vertices
+  // are split (split_non_manifold_vertices.h); a non-manifold edge or inconsistent
+  // orientation throws InputError.
   explicit SurfaceDistance(const TriMesh& surface);
   ~SurfaceDistance();
   SurfaceDistance(SurfaceDistance&&) noexcept;

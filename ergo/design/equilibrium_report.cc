@@ -1,5 +1,6 @@
 #include "ergo/design/equilibrium_report.h"
 
+#include "ergo/design/centre_of_pressure.h"
 #include "ergo/ergonomics/pressure_statistics.h"
 #include "ergo/mesh/vtu_writer.h"
 
@@ -89,6 +90,11 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   json["mean_pressure_Pa"] = human.mean;
   json["contact_area_m2"] = human.contact_area;
   json["contact_stiffness_Pa_per_m"] = contact_stiffness;
+  const CentreOfPressure cop = ComputeCentreOfPressure(body, result.state, pressures.contacts);
+  if (cop.normal_force > 0) {
+    json["centre_of_pressure_m"] = Vector3Json(cop.point);
+    json["centre_of_pressure_z_fraction"] = cop.z_fraction;
+  }
   json["energy_J"] = result.energy;
   json["zeta_human"] = pressures.human.cost;
   json["zeta_support"] = pressures.support.cost;

@@ -31,6 +31,7 @@ void WriteSupportVtu(const std::string& path, const TriMesh& support,
 // The summary of an equilibrium: converged, status, reason, iterations, residual_N,
 // contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,
 // contact_area_m2, mean_pressure_Pa, p95_pressure_Pa, contact_stiffness_Pa_per_m (κ),
+// centre_of_pressure_m and centre_of_pressure_z_fraction (centre_of_pressure.h),
 // energy_J, the time
 // split, and the support side's peak pressure and contact vertex count.
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,

@@ -24,6 +24,13 @@ std::string PeerMeshDir() {
   return "";
 }
 
+std::string RealScanDir() {
+  const fs::path dir = fs::path(SourcePath("")) / ".." / "shared" / "real-scans";
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) return fs::canonical(dir, ec).string();
+  return "";
+}
+
 std::string MakeScratchDir(const std::string& prefix) {
   static std::atomic<int> counter{0};
   const fs::path dir =

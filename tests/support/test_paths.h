@@ -11,6 +11,9 @@ std::string SourcePath(const std::string& relative);
 // ../shared/peer-meshes next to the checkout, or "" when absent (a user's clone).
 std::string PeerMeshDir();
 
+// ../shared/real-scans (a real foot scan and its licence) next to the checkout, or "".
+std::string RealScanDir();
+
 // A fresh empty directory under the system temp dir, unique per call.
 std::string MakeScratchDir(const std::string& prefix);
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -58,6 +59,17 @@ DEFINE_string(skin, "",
 DEFINE_string(skin_unit, "m", "unit of --skin, --depth_csv and --stiffness_csv: m or mm");
 DEFINE_string(depth_csv, "", "x,y,z,depth samples of the tissue depth for --skin");
 DEFINE_string(stiffness_csv, "", "x,y,z,E samples of Young's modulus (Pa) for --skin");
+DEFINE_string(anatomy, "none",
+              "--skin: anatomical priors for the tissue depth and E (foot, seat, hand or none; "
+              "ergo/body/README.md); --depth_csv / --stiffness_csv replace them near their points "
+              "and --skin_depth / --skin_youngs_modulus are then unused");
+DEFINE_string(skin_axes, "x,y,z",
+              "--skin: the scan's axes that become ergo's x, y (up) and z (the part's length), "
+              "e.g. y,z,x for a scan with z up and its length along x");
+DEFINE_string(heel_end, "auto",
+              "a user's foot (--anatomy=foot, --shoe_load_point): auto (the end with the ankle), "
+              "min_z or max_z");
+DEFINE_string(foot_side, "auto", "--anatomy=foot: left, right or auto (from the arch)");
 DEFINE_double(skin_depth, 0.02, "constant tissue depth for --skin without --depth_csv, m");
 DEFINE_double(skin_youngs_modulus, 1e4, "constant E for --skin without --stiffness_csv, Pa");
 DEFINE_double(skin_poisson_ratio, 0.45, "Poisson's ratio of --skin's tissue");
@@ -77,6 +89,14 @@ DEFINE_double(chair_front_radius, 0.06, "chair: radius of the arc under the knee
 DEFINE_double(chair_body_mass, 30, "chair: mass of the seated body part, kg");
 DEFINE_double(shoe_lean_torque, 0,
               "shoe: torque about x on the foot's core, N m (> 0 leans forward onto the toes)");
+DEFINE_string(shoe_load_point, "auto",
+              "shoe: where the load's line meets the sole, as a fraction of the foot's length "
+              "from the heel (quiet standing: 0.445); auto: 0.445 for a user's foot, through the "
+              "core's centre for the generated one");
+DEFINE_string(shoe_sole_outline, "rectangle",
+              "shoe: the sole's outline: rectangle, or footprint (the foot's footprint grown by "
+              "--shoe_sole_margin: a fitted insole, printed as such)");
+DEFINE_double(shoe_sole_margin, 0.01, "shoe: the sole's outline beyond the foot's, m");
 DEFINE_double(shoe_body_mass, 75, "shoe: the wearer's mass, kg");
 DEFINE_double(shoe_load_fraction, 0.5, "shoe: fraction of the wearer's weight on this foot");
 DEFINE_double(shoe_foot_length, 0.26,
@@ -148,6 +168,14 @@ UserBodyInput UserBodyFlags() {
   input.youngs_modulus = FLAGS_skin_youngs_modulus;
   input.poisson_ratio = FLAGS_skin_poisson_ratio;
   input.total_mass = FLAGS_skin_total_mass;
+  input.anatomy.anatomy = ParseAnatomy(FLAGS_anatomy, "--anatomy");
+  input.anatomy.heel_end = ParseHeelEnd(FLAGS_heel_end, "--heel_end");
+  input.anatomy.foot_side = ParseFootSide(FLAGS_foot_side, "--foot_side");
+  input.axes = FLAGS_skin_axes;
+  if ((input.anatomy.anatomy != Anatomy::kNone || input.axes != "x,y,z") && FLAGS_skin.empty()) {
+    throw InputError(input.anatomy.anatomy != Anatomy::kNone ? "--anatomy" : "--skin_axes", "",
+                     "applies to a scanned skin surface only", "give --skin=FILE or drop it");
+  }
   return input;
 }
 
@@ -211,11 +239,29 @@ void ValidateSceneFlags() {
   RequireInRange("chair_body_mass", FLAGS_chair_body_mass, 1, 500, "kg, e.g. 30");
   RequireInRange("shoe_lean_torque", FLAGS_shoe_lean_torque, -1e3, 1e3, "N m, e.g. 0");
   RequireInRange("shoe_body_mass", FLAGS_shoe_body_mass, 1, 500, "kg, e.g. 75");
+  RequireInRange("shoe_sole_margin", FLAGS_shoe_sole_margin, 0, 0.1, "metres, e.g. 0.01");
   RequireInRange("shoe_load_fraction", FLAGS_shoe_load_fraction, 0, 1, "e.g. 0.5");
   RequireInRange("shoe_foot_length", FLAGS_shoe_foot_length, 0.185, 0.335, "metres, e.g. 0.26");
   RequireInRange("shoe_foot_breadth_scale", FLAGS_shoe_foot_breadth_scale, 0.65, 1.55, "e.g. 1");
   RequireInRange("shoe_modulus_scale", FLAGS_shoe_modulus_scale, 0.05, 20, "e.g. 1.3");
   RequireInRange("mouse_hand_mass", FLAGS_mouse_hand_mass, 0.01, 10, "kg, e.g. 0.45");
+}
+
+// --shoe_load_point: a fraction in [0, 1], or auto (quiet standing's 0.445 for a user's
+// foot; the generated foot keeps its load through the core's centre).
+std::optional<double> ShoeLoadPointFlag(bool generated_foot) {
+  if (FLAGS_shoe_load_point == "auto") {
+    if (generated_foot) return std::nullopt;
+    return 0.445;
+  }
+  char* end = nullptr;
+  const double value = std::strtod(FLAGS_shoe_load_point.c_str(), &end);
+  if (end == FLAGS_shoe_load_point.c_str() || *end != '\0' || !(value >= 0 && value <= 1)) {
+    throw InputError("--shoe_load_point", "",
+                     "'" + FLAGS_shoe_load_point + "' is not a fraction of the foot's length",
+                     "give e.g. 0.445 (quiet standing) or auto");
+  }
+  return value;
 }
 
 // The flags every scene shares, applied to its options struct.
@@ -291,6 +337,13 @@ Scenario MakeShoeFromFlags() {
     o.sole_wall_spacing = std::max(o.sole_wall_spacing, o.sole_top_spacing);
   }
   o.lean_torque = FLAGS_shoe_lean_torque;
+  o.load_point = ShoeLoadPointFlag(o.user_body.empty());
+  if (FLAGS_shoe_sole_outline != "rectangle" && FLAGS_shoe_sole_outline != "footprint") {
+    throw InputError("--shoe_sole_outline", "", "'" + FLAGS_shoe_sole_outline + "' is unknown",
+                     "use rectangle or footprint");
+  }
+  o.footprint_outline = FLAGS_shoe_sole_outline == "footprint";
+  o.sole_margin = FLAGS_shoe_sole_margin;
   o.body_mass = FLAGS_shoe_body_mass;
   o.load_fraction = FLAGS_shoe_load_fraction;
   o.foot.length = FLAGS_shoe_foot_length;

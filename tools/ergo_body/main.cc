@@ -40,6 +40,16 @@ DEFINE_double(depth, 0, "constant layer depth, m (not scaled by --unit)");
 DEFINE_string(depth_samples, "", "CSV x,y,z,depth (in --unit), interpolated over the skin");
 DEFINE_double(youngs_modulus, 0, "constant Young's modulus, Pa (tissue: 5e3-15e3)");
 DEFINE_string(stiffness_samples, "", "CSV x,y,z,E (x,y,z in --unit, E in Pa)");
+DEFINE_string(anatomy, "none",
+              "--surface only: anatomical priors for depth and E: foot, seat, hand or none "
+              "(ergo/body/README.md; --depth_samples / --stiffness_samples replace them near "
+              "the measured points)");
+DEFINE_string(axes, "x,y,z",
+              "--surface only: the scan's axes that become ergo's x, y (up) and z (the part's "
+              "length), e.g. y,z,x for a scan with z up and its length along x");
+DEFINE_string(heel_end, "auto", "--anatomy=foot: where the heel is: auto, min_z or max_z");
+DEFINE_string(foot_side, "auto",
+              "--anatomy=foot: left or right (auto: the medial side from the arch's height)");
 DEFINE_double(poisson_ratio, 0.45, "Poisson's ratio of the tissue, in (-1, 0.5)");
 DEFINE_double(density, 1050, "tissue density, kg/m^3");
 DEFINE_double(core_mass, -1, "core mass, kg; negative = core volume times --core_density");
@@ -60,6 +70,8 @@ constexpr char kUsage[] =
     "builds a body part and writes a body directory.\n"
     "  ergo_body build (--surface=FILE [--unit=mm] | --shape=sphere_shell|ellipsoid_shell ...)\n"
     "      (--depth=METRES | --depth_samples=CSV) (--youngs_modulus=PA | --stiffness_samples=CSV)\n"
+    "      or, for a scan, --anatomy=foot|seat|hand [--axes=y,z,x] [--heel_end=..] "
+    "[--foot_side=..]\n"
     "      [--poisson_ratio=0.45] [--density=1050] [--core_mass=KG] --edge_length=METRES --out=DIR";
 
 [[noreturn]] void FlagError(const std::string& flag, const std::string& what,
@@ -103,6 +115,10 @@ int Build() {
   options.depth_samples = FLAGS_depth_samples;
   if (Given("youngs_modulus")) options.youngs_modulus = FLAGS_youngs_modulus;
   options.stiffness_samples = FLAGS_stiffness_samples;
+  options.anatomy.anatomy = ParseAnatomy(FLAGS_anatomy, "--anatomy");
+  options.anatomy.heel_end = ParseHeelEnd(FLAGS_heel_end, "--heel_end");
+  options.anatomy.foot_side = ParseFootSide(FLAGS_foot_side, "--foot_side");
+  options.axes = FLAGS_axes;
   options.poisson_ratio = FLAGS_poisson_ratio;
   options.density = FLAGS_density;
   options.core_mass = FLAGS_core_mass;

@@ -1,0 +1,107 @@
+#include "problems/load_point.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include <gtest/gtest.h>
+
+#include "ergo/contact/support.h"
+#include "ergo/design/centre_of_pressure.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/mesh/input_error.h"
+#include "problems/shoe_scenario.h"
+#include "tests/support/test_paths.h"
+
+namespace ergo {
+namespace {
+
+struct Solved {
+  EquilibriumResult result;
+  CentreOfPressure cop;
+  Eigen::Vector3d load;
+};
+
+Solved SolveOnce(const Scenario& scenario) {
+  EquilibriumSolver solver(*scenario.body, scenario.design.equilibrium);
+  Solved s;
+  s.result = solver.Solve(Support(scenario.support), scenario.start);
+  s.cop =
+      ComputeCentreOfPressure(*scenario.body, s.result.state, solver.last_evaluation().contacts);
+  s.load = scenario.body->TotalLoad();
+  std::cout << scenario.description << ": " << s.result.BriefReport() << ", CoP at "
+            << s.cop.z_fraction << " of the length\n";
+  return s;
+}
+
+// Moment balance on a flat frictionless sole: every contact force is vertical, so the centre
+// of pressure is where the whole load's line of action meets the sole — the stated load
+// point. The torque uses the part's rest centre of mass; the deformed one moves by about a
+// millimetre (tissue compression, a small pitch) on a 26 cm foot, hence 0.01 of the length.
+TEST(Problems, ShoeLoadPointPutsTheCentreOfPressureThereOnAFlatSole) {
+  for (double fraction : {0.35, 0.55}) {
+    ShoeScenarioOptions options = ShoeScenarioOptions::FromPreset("quick");
+    options.load_point = fraction;
+    const Solved s = SolveOnce(MakeShoeScenario(options));
+    ASSERT_TRUE(s.result.converged) << s.result.FullReport();
+    // All of the load is carried by vertical contact forces.
+    EXPECT_NEAR(s.cop.normal_force, s.load.norm(), 1e-6 * s.load.norm());
+    EXPECT_NEAR(s.cop.z_fraction, fraction, 0.01);
+  }
+}
+
+TEST(Problems, LoadPointOutsideTheFootIsRefused) {
+  ShoeScenarioOptions options = ShoeScenarioOptions::FromPreset("quick");
+  options.load_point = 1.5;
+  EXPECT_THROW(MakeShoeScenario(options), InputError);
+}
+
+// Issue 14: the shipped real scan as a user's foot with the anatomical priors, standing with
+// half of 75 kg on a flat sole with the default load point (0.445 of the foot's length). A
+// long run (CGAL skin meshing at 8 mm, 1.5–5 min), so only with ERGO_LONG_TESTS=1 and never
+// in CI. What holds: the centre of pressure sits at the load point (moment balance). What
+// does not yet: the issue's region shares (rearfoot 40–65 %, midfoot under 25 %; barefoot
+// standing: rearfoot 54–55 %, J Physiol Anthropol 2020) — measured 28 / 48 / 24 % rearfoot /
+// midfoot / forefoot (regions < 0.3, 0.3–0.6, beyond, of the length from the heel); the
+// shares are printed, and README.md "Scans" gives the figures and what is left.
+TEST(Problems, ScannedFootWithAnatomicalPriorsStandsWithItsCentreOfPressureAtTheLoadPoint) {
+  if (std::getenv("ERGO_LONG_TESTS") == nullptr)
+    GTEST_SKIP() << "a long run: set ERGO_LONG_TESTS=1";
+  const std::string dir = testing::RealScanDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/real-scans is not present";
+  ShoeScenarioOptions options = ShoeScenarioOptions::FromPreset("quick");
+  options.user_body.skin_surface = dir + "/foot_find_template.obj";
+  options.user_body.axes = "y,z,x";
+  options.user_body.anatomy.anatomy = Anatomy::kFoot;
+  options.user_body.edge_length = 0.008;  // 10 mm pinches the skin between the toes
+  options.user_body.total_mass = 1.4;
+  options.contact_stiffness = 1.4e9;
+  options.load_point = 0.445;
+  const Scenario scenario = MakeShoeScenario(options);
+  EquilibriumSolver solver(*scenario.body, scenario.design.equilibrium);
+  const EquilibriumResult result = solver.Solve(Support(scenario.support), scenario.start);
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  const SurfaceContacts& contacts = solver.last_evaluation().contacts;
+  const Vertices& rest = scenario.body->rest().vertices;
+  const bool heel_at_min = HeelAtMinZ(rest, HeelEnd::kAuto, "scan");
+  const double min_z = rest.col(2).minCoeff(), length = rest.col(2).maxCoeff() - min_z;
+  double share[3] = {0, 0, 0}, total = 0;
+  const Skin& skin = scenario.body->skin();
+  for (Eigen::Index l = 0; l < skin.vertices.size(); ++l) {
+    const double force = contacts.skin_force(l, 1);  // upward on the foot
+    if (force <= 0) continue;
+    double s = (rest(skin.vertices[l], 2) - min_z) / length;
+    if (!heel_at_min) s = 1 - s;
+    share[s < 0.3 ? 0 : s < 0.6 ? 1 : 2] += force;
+    total += force;
+  }
+  for (double& region : share) region /= total;
+  const CentreOfPressure cop = ComputeCentreOfPressure(*scenario.body, result.state, contacts);
+  std::cout << "rearfoot " << share[0] << ", midfoot " << share[1] << ", forefoot " << share[2]
+            << "; peak contact at " << 1e3 * result.max_penetration << " mm penetration; CoP "
+            << (heel_at_min ? cop.z_fraction : 1 - cop.z_fraction) << " of the length\n";
+  EXPECT_NEAR(heel_at_min ? cop.z_fraction : 1 - cop.z_fraction, 0.445, 0.01);
+}
+
+}  // namespace
+}  // namespace ergo
