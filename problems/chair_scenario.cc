@@ -1,11 +1,13 @@
 #include "problems/chair_scenario.h"
 
 #include <chrono>
+#include <memory>
 #include <sstream>
 
 #include "ergo/body/core_lock.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
+#include "problems/load_point.h"
 
 namespace ergo {
 ChairScenarioOptions ChairScenarioOptions::FromPreset(const std::string& preset) {
@@ -27,10 +29,11 @@ Scenario MakeChairScenario(const ChairScenarioOptions& o, ScenarioBuildReport* r
   ScenarioBuildReport local;
   ScenarioBuildReport& r = report != nullptr ? *report : local;
   if (!(o.body_edge_length > 0) || !(o.contact_stiffness > 0) || !(o.free_fall_mass_scale > 0) ||
-      !(o.start_gap >= 0) || !(o.upper_body_load >= 0)) {
+      !(o.start_gap >= 0) || !(o.upper_body_load >= 0) ||
+      (o.load_point && !(*o.load_point >= 0 && *o.load_point <= 1))) {
     throw InputError("chair scenario", "options",
                      "edge length, contact stiffness and free-fall scale must be positive, the "
-                     "gap and the upper-body load non-negative",
+                     "gap and the upper-body load non-negative, the load point in [0, 1]",
                      "check the chair options");
   }
   Scenario scenario;
@@ -48,6 +51,18 @@ Scenario MakeChairScenario(const ChairScenarioOptions& o, ScenarioBuildReport* r
   auto start = std::chrono::steady_clock::now();
   const bool generated_block = o.user_support.empty();
   scenario.support = generated_block ? MakeProfileBlock(o.block) : LoadUserSupport(o.user_support);
+  if (o.load_point) {
+    // The seat's depth: the support's extent along z, from its back (smallest z).
+    const double back = scenario.support.vertices.col(2).minCoeff();
+    const double depth = scenario.support.vertices.col(2).maxCoeff() - back;
+    Eigen::Vector3d point = scenario.body->core_centre();
+    point.z() = back + *o.load_point * depth;
+    auto loaded = std::make_shared<LayeredBody>(*scenario.body);
+    loaded->SetExternalWrench(
+        load.external_force,
+        load.external_torque + TorqueThroughPoint(*scenario.body, load.external_force, point));
+    scenario.body = loaded;
+  }
   r.support_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "chair");

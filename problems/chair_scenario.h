@@ -7,6 +7,7 @@
 // SI units; y up, +z towards the knees.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "problems/negative_image.h"
@@ -42,6 +43,11 @@ struct ChairScenarioOptions {
   // expressed (two free axes generate the third), so the chair pitches only, as the shoe.
   std::string lock = "tx,tz,ry,rz";
   double upper_body_load = 0;  // extra downward force on the core, N (paper: 0, gravity only)
+  // Where the whole load's line of action (the body's weight plus upper_body_load) meets the
+  // seat, as a fraction of the seat's depth (its z extent) from the back; a pitch torque on
+  // the core (problems/load_point.h). Unset: the loads act where they are (the weight at the
+  // body's centre of mass, upper_body_load at the core's centre).
+  std::optional<double> load_point;
   // Contact stiffness κ, Pa/m (contact pressure per metre of penetration; mesh-independent):
   // calibrated for 0.3 mm max penetration on the flat start of the quick preset;
   // ergo_optimize can recalibrate (--contact_stiffness=auto).

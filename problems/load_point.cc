@@ -23,9 +23,14 @@ Eigen::Vector3d LoadPointTorque(const LayeredBody& body, const Eigen::Vector3d& 
   const Vertices& rest = body.rest().vertices;
   const bool heel_at_min = HeelAtMinZ(rest, heel_end, source);
   const double min_z = rest.col(2).minCoeff(), max_z = rest.col(2).maxCoeff();
-  const Eigen::Vector3d& centre = body.core_centre();
-  Eigen::Vector3d point = centre;
+  Eigen::Vector3d point = body.core_centre();
   point.z() = heel_at_min ? min_z + fraction * (max_z - min_z) : max_z - fraction * (max_z - min_z);
+  return TorqueThroughPoint(body, force, point);
+}
+
+Eigen::Vector3d TorqueThroughPoint(const LayeredBody& body, const Eigen::Vector3d& force,
+                                   const Eigen::Vector3d& point) {
+  const Eigen::Vector3d& centre = body.core_centre();
   const Eigen::Vector3d weight = body.total_mass() * body.gravity();
   return (point - centre).cross(force + weight) - (RestCentreOfMass(body) - centre).cross(weight);
 }

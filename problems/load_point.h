@@ -22,6 +22,11 @@ namespace ergo {
 Eigen::Vector3d LoadPointTorque(const LayeredBody& body, const Eigen::Vector3d& force,
                                 double fraction, HeelEnd heel_end, const std::string& source);
 
+// The same for a point given directly (its x and z are used; y is irrelevant for a vertical
+// load): τ = (P − C) × (F + M g) − (G − C) × M g.
+Eigen::Vector3d TorqueThroughPoint(const LayeredBody& body, const Eigen::Vector3d& force,
+                                   const Eigen::Vector3d& point);
+
 // The part's centre of mass at rest, m.
 Eigen::Vector3d RestCentreOfMass(const LayeredBody& body);
 

@@ -85,6 +85,10 @@ DEFINE_string(designed, "up",
 DEFINE_double(designed_min_normal_y, 0.5, "see --designed");
 // Scene-specific.
 DEFINE_double(chair_upper_body_load, 0, "chair: extra downward force on the core, N (paper: 0)");
+DEFINE_string(chair_load_point, "none",
+              "chair: where the whole load's line meets the seat, as a fraction of the seat's "
+              "depth from the back (a pitch torque on the core), or none (the weight acts at the "
+              "body's centre of mass)");
 DEFINE_double(chair_front_radius, 0.06, "chair: radius of the arc under the knees, m");
 DEFINE_double(chair_body_mass, 30, "chair: mass of the seated body part, kg");
 DEFINE_double(shoe_lean_torque, 0,
@@ -249,19 +253,24 @@ void ValidateSceneFlags() {
 
 // --shoe_load_point: a fraction in [0, 1], or auto (quiet standing's 0.445 for a user's
 // foot; the generated foot keeps its load through the core's centre).
+// A fraction in [0, 1] from a flag, or nullopt for its `word` (none, auto).
+std::optional<double> FractionFlag(const std::string& text, const char* flag, const char* word) {
+  if (text == word) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(value >= 0 && value <= 1)) {
+    throw InputError(std::string("--") + flag, "", "'" + text + "' is not a fraction in [0, 1]",
+                     std::string("give e.g. 0.445, or ") + word);
+  }
+  return value;
+}
+
 std::optional<double> ShoeLoadPointFlag(bool generated_foot) {
   if (FLAGS_shoe_load_point == "auto") {
     if (generated_foot) return std::nullopt;
     return 0.445;
   }
-  char* end = nullptr;
-  const double value = std::strtod(FLAGS_shoe_load_point.c_str(), &end);
-  if (end == FLAGS_shoe_load_point.c_str() || *end != '\0' || !(value >= 0 && value <= 1)) {
-    throw InputError("--shoe_load_point", "",
-                     "'" + FLAGS_shoe_load_point + "' is not a fraction of the foot's length",
-                     "give e.g. 0.445 (quiet standing) or auto");
-  }
-  return value;
+  return FractionFlag(FLAGS_shoe_load_point, "shoe_load_point", "auto");
 }
 
 // The flags every scene shares, applied to its options struct.
@@ -324,6 +333,7 @@ Scenario MakeChairFromFlags() {
   if (FLAGS_support_edge_length > 0) o.block.top_spacing = FLAGS_support_edge_length;
   o.block.wall_spacing = std::max(o.block.wall_spacing, o.block.top_spacing);
   o.upper_body_load = FLAGS_chair_upper_body_load;
+  o.load_point = FractionFlag(FLAGS_chair_load_point, "chair_load_point", "none");
   o.block.front_radius = FLAGS_chair_front_radius;
   o.body.total_mass = FLAGS_chair_body_mass;
   return BuildAndReport("chair", o, MakeChairScenario);
