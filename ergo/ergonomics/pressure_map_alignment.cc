@@ -137,7 +137,7 @@ bool ParseAlignmentScore(const std::string& name, AlignmentScore* score) {
   return false;
 }
 
-Eigen::Vector2d CentreOfPressure(const PlanarPressureMap& map) {
+Eigen::Vector2d PressureCentroid(const PlanarPressureMap& map) {
   const Eigen::VectorXd force = map.sample_pressure().cwiseMax(0.0).cwiseProduct(map.sample_area());
   const double total = force.sum();
   if (!(total > 0)) return Eigen::Vector2d::Zero();
@@ -145,7 +145,7 @@ Eigen::Vector2d CentreOfPressure(const PlanarPressureMap& map) {
 }
 
 std::string PressureMapAlignment::Describe(const PlanarPressureMap& measured) const {
-  const Eigen::Vector2d centre = CentreOfPressure(measured);
+  const Eigen::Vector2d centre = PressureCentroid(measured);
   const Eigen::Vector2d shift = motion.Apply(centre) - centre;
   std::ostringstream out;
   out << "rotated " << motion.angle / kDegree
@@ -168,8 +168,8 @@ PressureMapAlignment AlignPressureMaps(const PlanarPressureMap& simulated,
     result.evaluations = objective.evaluations();
     return result;
   }
-  const Eigen::Vector2d centre = CentreOfPressure(measured);
-  const Eigen::Vector2d matched = CentreOfPressure(simulated) - centre;
+  const Eigen::Vector2d centre = PressureCentroid(measured);
+  const Eigen::Vector2d matched = PressureCentroid(simulated) - centre;
   auto motion_of = [&](const Candidate& c) {
     return RigidMotion2d::About(centre, c.angle, c.shift);
   };

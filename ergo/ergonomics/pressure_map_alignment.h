@@ -53,6 +53,6 @@ PressureMapAlignment AlignPressureMaps(const PlanarPressureMap& simulated,
                                        const AlignmentOptions& options);
 
 // The force-weighted centroid of a map's samples (its centre of pressure), m.
-Eigen::Vector2d CentreOfPressure(const PlanarPressureMap& map);
+Eigen::Vector2d PressureCentroid(const PlanarPressureMap& map);
 
 }  // namespace ergo

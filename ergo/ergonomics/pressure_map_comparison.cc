@@ -24,7 +24,7 @@ MapSummary Summarise(const PlanarPressureMap& map) {
     summary.peak = pressure.maxCoeff(&peak);
     summary.peak_point = map.sample_points().row(peak).transpose();
   }
-  summary.centre_of_pressure = CentreOfPressure(map);
+  summary.centre_of_pressure = PressureCentroid(map);
   return summary;
 }
 

@@ -24,7 +24,7 @@ SyntheticPlate MakeSyntheticPlate(const PlanarPressureMap& truth,
   CHECK_GE(options.subsamples, 1);
   CHECK_GE(options.margin_cells, 0);
   const RigidMotion2d placed =
-      RigidMotion2d::About(CentreOfPressure(truth), options.rotation, options.shift);
+      RigidMotion2d::About(PressureCentroid(truth), options.rotation, options.shift);
   const PlanarPressureMap moved = truth.Moved(placed);
   Eigen::Vector2d lower, upper;
   moved.Bounds(&lower, &upper);

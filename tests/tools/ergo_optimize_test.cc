@@ -208,9 +208,15 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
                           "evaluations",
                           "time_split",
                           "stop_reason",
-                          "candidates"}) {
+                          "candidates",
+                          "centre_of_pressure"}) {
     EXPECT_NE(FindMember(summary, key), nullptr) << key;
   }
+  // The generated foot's load through its core's centre: the centre of pressure about a
+  // third of the foot's length from the heel (0.348 measured), on the foot.
+  const double cop = summary["centre_of_pressure"]["initial"]["z_fraction"].get<double>();
+  EXPECT_GT(cop, 0.2);
+  EXPECT_LT(cop, 0.6);
   // The headline is the body placed afresh: the kept design must beat the flat sole there.
   EXPECT_TRUE(GetBool(summary, "fresh_placement_converged", "summary"));
   EXPECT_GE(GetNumber(summary, "reduction_percent", "summary"), 20.0) << Read(dir + ".log");

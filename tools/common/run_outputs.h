@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "ergo/design/centre_of_pressure.h"
 #include "ergo/design/contact_pressures.h"
 #include "ergo/design/design_problem.h"
 #include "ergo/mesh/json.h"
@@ -25,6 +26,7 @@ struct DesignReport {
   ContactPressures pressures;
   double peak_pressure = 0;      // skin side, Pa
   double skin_contact_area = 0;  // Σ rest areas of skin vertices in contact, m²
+  CentreOfPressure centre_of_pressure;  // of the skin's contact forces (centre_of_pressure.h)
 };
 
 // Evaluates `x` on `problem` (φ only) and gathers its pressures. evaluation.ok tells

@@ -98,6 +98,20 @@ Json SummaryJson(const RunSummary& s) {
   j["skin_contact_area_m2"] =
       ThreeWay(s.initial.skin_contact_area, Of(s.followed, s.followed.skin_contact_area),
                Of(s.optimized, s.optimized.skin_contact_area));
+  // Where the skin's contact force acts (a pressure plate's centre of pressure), and as a
+  // fraction of the body's rest extent along z (the shoe: of the foot's length from the heel).
+  auto centre = [](const DesignReport& report) {
+    const CentreOfPressure& c = report.centre_of_pressure;
+    if (!(c.normal_force > 0)) return Json();
+    Json out = Json::object();
+    out["point_m"] = Json::array({c.point.x(), c.point.y(), c.point.z()});
+    out["z_fraction"] = c.z_fraction;
+    return out;
+  };
+  Json centres = Json::object();
+  centres["initial"] = centre(s.initial);
+  centres["optimized"] = s.optimized.evaluation.ok ? centre(s.optimized) : Json();
+  j["centre_of_pressure"] = centres;
   j["initial_peak_pressure_Pa"] = s.initial.peak_pressure;
   j["fresh_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
   j["optimized_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
