@@ -4,16 +4,12 @@
 #include <array>
 
 #include "ergo/mesh/input_error.h"
+#include "problems/smooth_step.h"
 
 namespace ergo {
 namespace {
 
 enum FootRegion { kHeel = 0, kArch = 1, kBall = 2, kToes = 3, kAnkle = 4, kFootRegions = 5 };
-
-double SmoothStep(double edge0, double edge1, double x) {
-  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-  return t * t * (3 - 2 * t);
-}
 
 }  // namespace
 

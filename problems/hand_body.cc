@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "ergo/mesh/input_error.h"
+#include "problems/smooth_step.h"
 
 namespace ergo {
 namespace {
@@ -69,11 +70,6 @@ std::vector<Eigen::Vector3d> CurlDigit(const std::vector<Ball>& balls, const Eig
     joints.push_back(a + lengths[k] * (std::cos(theta) * u + std::sin(theta) * v));
   }
   return joints;
-}
-
-double SmoothStep(double edge0, double edge1, double x) {
-  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-  return t * t * (3 - 2 * t);
 }
 
 }  // namespace

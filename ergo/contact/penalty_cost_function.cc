@@ -5,18 +5,14 @@
 #include <glog/logging.h>
 #include <Eigen/Geometry>
 
+#include "ergo/mesh/skew_matrix.h"
+
 namespace ergo {
 namespace {
 
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 using RowMajor3x3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
-
-Matrix3d Skew(const Vector3d& v) {
-  Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
 
 // Shared Evaluate: n feature vertices, parameters (p, x0, …, x_{n−1}).
 bool EvaluateBlocks(FeatureType type, double k, double const* const* parameters, double* residuals,

@@ -3,18 +3,13 @@
 #include <glog/logging.h>
 #include <Eigen/Geometry>
 
+#include "ergo/mesh/skew_matrix.h"
+
 namespace ergo {
 namespace {
 
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
-
-// Skew matrix [v]× with [v]× w = v × w.
-Matrix3d Skew(const Vector3d& v) {
-  Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
 
 // q(a, b) = ‖a × b‖² = ‖a‖²‖b‖² − (a·b)² (Lagrange), a quartic polynomial, with its
 // gradient over (a, b) written as cross products (no cancellation) and its Hessian.

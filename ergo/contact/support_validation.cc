@@ -17,7 +17,7 @@
 namespace ergo {
 namespace {
 
-std::uint64_t Key(int from, int to) {
+std::uint64_t DirectedEdgeKey(int from, int to) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) |
          static_cast<std::uint32_t>(to);
 }
@@ -80,15 +80,15 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
   incident.reserve(3 * num_triangles);
   for (Eigen::Index f = 0; f < num_triangles; ++f) {
     for (int c = 0; c < 3; ++c) {
-      incident[Key(mesh.triangles(f, c), mesh.triangles(f, (c + 1) % 3))].push_back(
+      incident[DirectedEdgeKey(mesh.triangles(f, c), mesh.triangles(f, (c + 1) % 3))].push_back(
           static_cast<int>(f));
     }
   }
   for (Eigen::Index f = 0; f < num_triangles; ++f) {
     for (int c = 0; c < 3; ++c) {
       const int from = mesh.triangles(f, c), to = mesh.triangles(f, (c + 1) % 3);
-      const std::vector<int>& same = incident[Key(from, to)];
-      const auto reverse = incident.find(Key(to, from));
+      const std::vector<int>& same = incident[DirectedEdgeKey(from, to)];
+      const auto reverse = incident.find(DirectedEdgeKey(to, from));
       const std::size_t opposite = reverse == incident.end() ? 0 : reverse->second.size();
       if (same.size() + opposite > 2) {
         throw InputError(
@@ -132,7 +132,7 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
       const int f = corner / 3, c = corner % 3;
       const int next = mesh.triangles(f, (c + 1) % 3);
       // The triangle across the outgoing edge (v, next) traverses it as (next, v).
-      const int g = incident[Key(next, static_cast<int>(v))].front();
+      const int g = incident[DirectedEdgeKey(next, static_cast<int>(v))].front();
       int cg = 0;
       while (mesh.triangles(g, cg) != v) ++cg;
       corner = 3 * g + cg;

@@ -7,18 +7,9 @@
 #include <glog/logging.h>
 
 #include "ergo/mesh/seconds_since.h"
+#include "ergo/mesh/skew_matrix.h"
 
 namespace ergo {
-namespace {
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
-}  // namespace
-
 Eigen::Matrix3d LeftJacobianSO3(const Eigen::Vector3d& theta) {
   const double angle = theta.norm();
   const Eigen::Matrix3d k = Skew(theta);

@@ -318,9 +318,11 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     result.line_search_seconds += SecondsSince(start_search);
     result.line_search_trials += found.evaluations;
     if (found.step == 0) {
+      std::ostringstream residual;  // %g: the residual is often far below 1e-6 N here
+      residual << result.residual;
       return finish(EquilibriumStatus::kLineSearchFailure,
                     "no step length along the Newton direction lowered the energy (residual " +
-                        std::to_string(result.residual) + " N)");
+                        residual.str() + " N)");
     }
     state = system.layout().Retract(state, found.step * step);
     if (options_.progress)

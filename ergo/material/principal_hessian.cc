@@ -3,8 +3,8 @@
 namespace ergo {
 namespace {
 
-constexpr int kPairFirst[3] = {0, 0, 1};
-constexpr int kPairSecond[3] = {1, 2, 2};
+constexpr int kHessianPairFirst[3] = {0, 0, 1};
+constexpr int kHessianPairSecond[3] = {1, 2, 2};
 
 // Assembles the (3N)x(3N) Hessian of psi(F) with F = sum_v x_v g_v^T (N "vertices",
 // g_v the rows of g), scaled by `scale`. With g_hat = g V the map is diagonal in the
@@ -23,8 +23,8 @@ Eigen::Matrix<double, 3 * N, 3 * N> AssembleInPrincipalFrame(const SignedSvd3& s
   alpha.diagonal() = h.stretch_block.diagonal();
   flip.diagonal().setZero();
   for (int p = 0; p < 3; ++p) {
-    const int i = kPairFirst[p];
-    const int j = kPairSecond[p];
+    const int i = kHessianPairFirst[p];
+    const int j = kHessianPairSecond[p];
     alpha(i, j) = alpha(j, i) = 0.5 * (h.difference_quotient(p) + h.sum_quotient(p));
     flip(i, j) = flip(j, i) = 0.5 * (h.difference_quotient(p) - h.sum_quotient(p));
   }
@@ -37,8 +37,8 @@ Eigen::Matrix<double, 3 * N, 3 * N> AssembleInPrincipalFrame(const SignedSvd3& s
       Eigen::Matrix3d m;
       m.diagonal().noalias() = alpha * products;
       for (int p = 0; p < 3; ++p) {
-        const int c = kPairFirst[p];
-        const int d = kPairSecond[p];
+        const int c = kHessianPairFirst[p];
+        const int d = kHessianPairSecond[p];
         const double k = h.stretch_block(c, d);
         const double b = flip(c, d);
         m(c, d) = k * g_hat(v, c) * g_hat(w, d) + b * g_hat(v, d) * g_hat(w, c);

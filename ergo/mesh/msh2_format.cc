@@ -12,7 +12,8 @@ namespace ergo::msh {
 
 namespace {
 
-const char kReexport[] = "re-export the mesh with gmsh (gmsh FILE -0 -format msh22 -o OUT.msh)";
+const char kReexportMsh22[] =
+    "re-export the mesh with gmsh (gmsh FILE -0 -format msh22 -o OUT.msh)";
 
 int64_t ReadCount(TextReader& reader, const std::string& what) {
   std::vector<std::string_view> tokens;
@@ -22,7 +23,7 @@ int64_t ReadCount(TextReader& reader, const std::string& what) {
   if (tokens.size() != 1) {
     reader.Fail("expected the " + what + " alone on the line, found " +
                     std::to_string(tokens.size()) + " values",
-                kReexport);
+                kReexportMsh22);
   }
   return ParseInteger(reader, tokens[0], what);
 }
@@ -43,7 +44,7 @@ void ReadNodesV2(TextReader& reader, Collector* collector) {
     if (tokens.size() != 4) {
       reader.Fail(
           "a node line must be 'tag x y z', found " + std::to_string(tokens.size()) + " values",
-          kReexport);
+          kReexportMsh22);
     }
     const int64_t tag = ParseInteger(reader, tokens[0], "node tag");
     const double x = ParseCoordinate(reader, tokens[1], tag);
@@ -69,18 +70,18 @@ void ReadElementsV2(TextReader& reader, Collector* collector) {
     if (tokens.size() < 3) {
       reader.Fail("an element line needs at least 'number type tag-count', found " +
                       std::to_string(tokens.size()) + " values",
-                  kReexport);
+                  kReexportMsh22);
     }
     const int64_t number = ParseInteger(reader, tokens[0], "element number");
     const int64_t type = ParseInteger(reader, tokens[1], "element type");
     const int64_t tag_count = ParseInteger(reader, tokens[2], "element tag count");
     const std::string element = "element " + std::to_string(number);
     if (type <= 0 || type > 1000)
-      reader.Fail(element + " has invalid type " + std::to_string(type), kReexport);
+      reader.Fail(element + " has invalid type " + std::to_string(type), kReexportMsh22);
     if (tag_count < 0 || tag_count > static_cast<int64_t>(tokens.size()) - 3) {
       reader.Fail(element + " declares " + std::to_string(tag_count) + " tags but the line has " +
                       std::to_string(tokens.size()) + " values",
-                  kReexport);
+                  kReexportMsh22);
     }
     const int node_count = NodesPerElement(static_cast<int>(type));
     if (node_count < 0) {
@@ -93,7 +94,7 @@ void ReadElementsV2(TextReader& reader, Collector* collector) {
                       std::to_string(node_count) + " nodes, " + std::to_string(tag_count) +
                       " tags) should have " + std::to_string(expected) +
                       " values on its line but has " + std::to_string(tokens.size()),
-                  "the file does not follow the MSH 2 format; " + std::string(kReexport));
+                  "the file does not follow the MSH 2 format; " + std::string(kReexportMsh22));
     }
     nodes.clear();
     for (int k = 0; k < node_count; ++k) {

@@ -13,7 +13,8 @@ namespace ergo::msh {
 
 namespace {
 
-const char kReexport[] = "re-export the mesh with gmsh (gmsh FILE -0 -format msh41 -o OUT.msh)";
+const char kReexportMsh41[] =
+    "re-export the mesh with gmsh (gmsh FILE -0 -format msh41 -o OUT.msh)";
 
 // Reads a line of `count` integers (at least min_count); returns them.
 std::vector<int64_t> ReadIntegers(TextReader& reader, size_t min_count, size_t max_count,
@@ -26,7 +27,7 @@ std::vector<int64_t> ReadIntegers(TextReader& reader, size_t min_count, size_t m
     reader.Fail("the " + what + " line should have " + std::to_string(min_count) +
                     (max_count > min_count ? " or more" : "") + " values, found " +
                     std::to_string(tokens.size()),
-                kReexport);
+                kReexportMsh41);
   }
   std::vector<int64_t> values;
   for (std::string_view token : tokens) values.push_back(ParseInteger(reader, token, what));
@@ -55,7 +56,7 @@ void ReadNodesV4(TextReader& reader, bool v41, Collector* collector) {
     if (in_block < 0 || in_block > total - read) {
       reader.Fail("node block declares " + std::to_string(in_block) + " nodes, but only " +
                       std::to_string(total - read) + " of the header's total remain",
-                  kReexport);
+                  kReexportMsh41);
     }
     // Coordinates, then the parametric coordinates of nodes on curves and surfaces.
     const size_t values = 3 + (parametric ? static_cast<size_t>(dim < 0 ? 0 : dim) : 0);
@@ -72,7 +73,7 @@ void ReadNodesV4(TextReader& reader, bool v41, Collector* collector) {
         if (tokens.size() != values) {
           reader.Fail("node coordinates line should have " + std::to_string(values) +
                           " values, found " + std::to_string(tokens.size()),
-                      kReexport);
+                      kReexportMsh41);
         }
         const int64_t tag = tags[static_cast<size_t>(n)];
         const double x = ParseCoordinate(reader, tokens[0], tag);
@@ -88,7 +89,7 @@ void ReadNodesV4(TextReader& reader, bool v41, Collector* collector) {
         if (tokens.size() != values + 1) {
           reader.Fail("node line should have " + std::to_string(values + 1) + " values (tag x y z" +
                           (values > 3 ? " u..." : "") + "), found " + std::to_string(tokens.size()),
-                      kReexport);
+                      kReexportMsh41);
         }
         const int64_t tag = ParseInteger(reader, tokens[0], "node tag");
         const double x = ParseCoordinate(reader, tokens[1], tag);
@@ -102,7 +103,7 @@ void ReadNodesV4(TextReader& reader, bool v41, Collector* collector) {
   if (read != total) {
     reader.Fail("the $Nodes header declares " + std::to_string(total) +
                     " nodes but its blocks hold " + std::to_string(read),
-                kReexport);
+                kReexportMsh41);
   }
   ExpectSectionEnd(reader, "$EndNodes", "the node counts are wrong");
 }
@@ -123,7 +124,7 @@ void ReadElementsV4(TextReader& reader, bool v41, Collector* collector) {
     if (in_block < 0 || in_block > total - read) {
       reader.Fail("element block declares " + std::to_string(in_block) + " elements, but only " +
                       std::to_string(total - read) + " of the header's total remain",
-                  kReexport);
+                  kReexportMsh41);
     }
     const int node_count = NodesPerElement(static_cast<int>(type > 0 && type < 1000 ? type : 0));
     for (int64_t e = 0; e < in_block; ++e) {
@@ -136,7 +137,7 @@ void ReadElementsV4(TextReader& reader, bool v41, Collector* collector) {
                         std::to_string(node_count + 1) + " values (tag and " +
                         std::to_string(node_count) + " nodes), found " +
                         std::to_string(tokens.size()),
-                    kReexport);
+                    kReexportMsh41);
       }
       const int64_t tag = ParseInteger(reader, tokens[0], "element tag");
       nodes.clear();
@@ -152,7 +153,7 @@ void ReadElementsV4(TextReader& reader, bool v41, Collector* collector) {
   if (read != total) {
     reader.Fail("the $Elements header declares " + std::to_string(total) +
                     " elements but its blocks hold " + std::to_string(read),
-                kReexport);
+                kReexportMsh41);
   }
   ExpectSectionEnd(reader, "$EndElements", "the element counts are wrong");
 }

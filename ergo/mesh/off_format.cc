@@ -26,7 +26,7 @@ bool AllDigits(std::string_view text) {
 }
 
 // Reads the header keyword and the counts line; returns the counts' tokens.
-std::vector<std::string_view> ReadHeader(TextReader& reader) {
+std::vector<std::string_view> ReadOffHeader(TextReader& reader) {
   std::vector<std::string_view> tokens;
   if (!reader.NextTokens('#', &tokens)) {
     reader.Fail("the file has no OFF header (only blank or comment lines)",
@@ -75,7 +75,7 @@ std::vector<std::string_view> ReadHeader(TextReader& reader) {
 TriMesh ReadOff(const std::string& path, const ReadOptions& options, ReadDetails* details) {
   const std::string text = BytesToText(ReadFileBytes(path));
   TextReader reader(path, text);
-  const std::vector<std::string_view> counts = ReadHeader(reader);
+  const std::vector<std::string_view> counts = ReadOffHeader(reader);
   if (counts.size() < 2) {
     reader.Fail("the counts line needs at least 'vertices faces', found " +
                     std::to_string(counts.size()) + " number(s)",

@@ -93,7 +93,7 @@ const char* EncodingName(PlyEncoding encoding) {
 }
 
 // Reads the header up to and including the end_header line; leaves `reader` after it.
-PlyHeader ReadHeader(TextReader& reader) {
+PlyHeader ReadPlyHeader(TextReader& reader) {
   const std::string fix = "re-export the mesh as PLY; its header is damaged";
   PlyHeader header;
   bool have_format = false;
@@ -397,7 +397,7 @@ void ReadData(const std::string& path, const PlyHeader& header, int64_t vertex_c
 TriMesh ReadPly(const std::string& path, const ReadOptions& options, ReadDetails* details) {
   const std::string bytes = ReadFileBytes(path);
   TextReader reader(path, bytes);
-  const PlyHeader header = ReadHeader(reader);
+  const PlyHeader header = ReadPlyHeader(reader);
   const std::string format = EncodingName(header.encoding);
   int64_t vertex_count = 0;
   bool have_vertices = false;

@@ -11,6 +11,7 @@
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/primitives.h"
 #include "ergo/mesh/surface_geometry.h"
+#include "tests/support/test_paths.h"
 
 namespace ergo {
 namespace {
@@ -70,6 +71,9 @@ TEST(Body, SurfaceWithConstantDepthHasAConcentricSphericalCore) {
 }
 
 TEST(Body, SurfaceWithDepthSamplesFollowsTheInterpolatedDepth) {
+  if (testing::SanitizedBuild())
+    GTEST_SKIP() << "two minutes of Mesh_3 under the sanitizers; Body.SurfaceWithConstantDepth* "
+                    "runs the same builder";
   const double values[6] = {0.015, 0.04, 0.02, 0.035, 0.025, 0.03};
   const PointSamples samples = PoleSamples(values);
   const SampleInterpolant depth = SampleInterpolant::Fit(samples);
@@ -112,6 +116,9 @@ TEST(Body, SurfaceWithDepthSamplesFollowsTheInterpolatedDepth) {
 }
 
 TEST(Body, StiffnessSamplesGiveEachTetItsColumnsValue) {
+  if (testing::SanitizedBuild())
+    GTEST_SKIP() << "a minute and a half of Mesh_3 under the sanitizers; "
+                    "Body.SurfaceWithConstantDepth* runs the same builder";
   const BuiltLayer layer =
       BuildLayerFromSurface(Skin(), SampleInterpolant::Constant(0.03), Options(), "icosphere");
   const double values[6] = {5e3, 15e3, 8e3, 12e3, 10e3, 6e3};

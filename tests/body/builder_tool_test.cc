@@ -57,6 +57,7 @@ std::string Inputs() {
 }
 
 TEST(Body, ToolBuildsABodyDirectoryFromASurface) {
+  ERGO_SKIP_WITHOUT_TOOLS();
   const std::string in = Inputs();
   const std::string out = testing::MakeScratchDir("tool_out") + "/body";
   const ToolRun run = RunTool("build --surface=" + in +
@@ -93,6 +94,7 @@ TEST(Body, ToolBuildsABodyDirectoryFromASurface) {
 }
 
 TEST(Body, ToolBuildsAnImplicitShell) {
+  ERGO_SKIP_WITHOUT_TOOLS();
   const std::string out = testing::MakeScratchDir("tool_shell") + "/shell";
   const ToolRun run = RunTool(
       "build --shape=sphere_shell --outer_radius=0.1 --core_radius=0.06 "
@@ -112,6 +114,7 @@ TEST(Body, ToolBuildsAnImplicitShell) {
 }
 
 TEST(Body, ToolBadInputsExitNonZeroNamingTheCulprit) {
+  ERGO_SKIP_WITHOUT_TOOLS();
   const std::string in = Inputs();
   const std::string out = testing::MakeScratchDir("tool_bad") + "/body";
   const std::string surface = "build --surface=" + in + "/ball.obj --unit=mm --out=" + out;

@@ -44,6 +44,7 @@ bool MatplotlibAvailable() {
 }
 
 TEST(Solvers, ErgoCompareRunsTwoOptimizersOnTheBumpAndWritesItsFiles) {
+  ERGO_SKIP_WITHOUT_TOOLS();
   const std::string out = testing::MakeScratchDir("ergo_compare") + "/run";
   std::string output;
   const int status = RunCompare(
@@ -78,6 +79,7 @@ TEST(Solvers, ErgoCompareRunsTwoOptimizersOnTheBumpAndWritesItsFiles) {
 }
 
 TEST(Solvers, ErgoCompareRejectsAnUnknownScenarioOrOptimizerWithStatus2) {
+  ERGO_SKIP_WITHOUT_TOOLS();
   const std::string out = testing::MakeScratchDir("ergo_compare_bad") + "/run";
   std::string output;
   EXPECT_EQ(RunCompare("--scenario=sofa --max_evals=4 --out=" + out, &output), 2);
@@ -91,6 +93,7 @@ TEST(Solvers, ErgoCompareRejectsAnUnknownScenarioOrOptimizerWithStatus2) {
 // The scenario flagfiles pose the same problem to ergo_compare as to ergo_optimize: every
 // flag in them is known to both (gflags refuses unknown flags in a flagfile).
 TEST(Solvers, ErgoCompareAcceptsEveryScenarioFlagfile) {
+  ERGO_SKIP_WITHOUT_TOOLS();
   for (const char* scene : {"shoe", "chair", "mouse"}) {
     const std::string out = testing::MakeScratchDir(std::string("ergo_compare_") + scene) + "/run";
     std::string output;

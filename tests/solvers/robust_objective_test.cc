@@ -10,11 +10,15 @@
 #include <gtest/gtest.h>
 
 #include "problems/bump_scenario.h"
+#include "tests/support/test_paths.h"
 
 namespace ergo {
 namespace {
 
 TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDifferences) {
+  if (testing::SanitizedBuild())
+    GTEST_SKIP() << "finite differences over five placements take minutes under the sanitizers; "
+                    "the design gradient tests run the same adjoint";
   BumpScenarioOptions options;
   options.edge_length = 0.016;
   Scenario scenario = MakeBumpScenario(options);

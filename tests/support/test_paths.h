@@ -29,4 +29,21 @@ constexpr bool SanitizedBuild() {
 #endif
 }
 
+// True where the command-line programs are built (ERGO_BUILD_TOOLS, on by default). The
+// sanitizer run builds the libraries and their stage tests only: the tests that run a
+// program are end-to-end runs, minutes each under the sanitizers, and run in the Release pass.
+constexpr bool ToolsBuilt() {
+#ifdef ERGO_TOOLS_BUILT
+  return true;
+#else
+  return false;
+#endif
+}
+
 }  // namespace ergo::testing
+
+// In a test that runs one of the programs (bin/ergo_*): skip where they are not built.
+#define ERGO_SKIP_WITHOUT_TOOLS()                                                               \
+  if (!::ergo::testing::ToolsBuilt())                                                           \
+  GTEST_SKIP() << "the programs are not built here (ERGO_BUILD_TOOLS=OFF: the sanitizer run); " \
+                  "the Release run runs this test"

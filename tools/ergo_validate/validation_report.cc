@@ -10,7 +10,7 @@
 namespace ergo {
 namespace {
 
-constexpr double kDegree = M_PI / 180;
+constexpr double kRadiansPerDegree = M_PI / 180;
 
 Json Millimetres(const Eigen::Vector2d& point) {
   Json pair = Json::array();
@@ -62,7 +62,7 @@ Json ComparisonJson(const ValidationRecord& record) {
   alignment["grid_pitch_mm"] = 1e3 * record.alignment_options.grid_pitch;
   // q_simulated = R(angle) q_measured + translation, in the measured map's own frame (a
   // plate's: its first cell's corner at the origin).
-  alignment["angle_deg"] = record.alignment.motion.angle / kDegree;
+  alignment["angle_deg"] = record.alignment.motion.angle / kRadiansPerDegree;
   alignment["translation_mm"] = Millimetres(record.alignment.motion.translation);
   alignment["initial_score"] = record.alignment.initial_score;
   alignment["score"] = record.alignment.score;
