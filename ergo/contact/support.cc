@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 
 #include "ergo/contact/closest_feature.h"
+#include "ergo/contact/directed_edge_key.h"
 #include "ergo/contact/support_validation.h"
 
 namespace ergo {
@@ -147,11 +148,6 @@ class ClosestTriangleSearch {
 // Every Build gets a new stamp, so hints name the exact shape that produced them.
 std::atomic<std::uint64_t> next_shape{1};
 
-std::uint64_t Key(int from, int to) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) |
-         static_cast<std::uint32_t>(to);
-}
-
 }  // namespace
 
 struct Support::Impl {
@@ -176,12 +172,12 @@ struct Support::Impl {
     directed.reserve(3 * nf);
     for (int f = 0; f < nf; ++f)
       for (int c = 0; c < 3; ++c)
-        directed[Key(mesh.triangles(f, c), mesh.triangles(f, (c + 1) % 3))] = f;
+        directed[DirectedEdgeKey(mesh.triangles(f, c), mesh.triangles(f, (c + 1) % 3))] = f;
     neighbour.assign(3 * nf, -1);
     for (int f = 0; f < nf; ++f)
       for (int c = 0; c < 3; ++c)
         neighbour[3 * f + c] =
-            directed.at(Key(mesh.triangles(f, (c + 1) % 3), mesh.triangles(f, c)));
+            directed.at(DirectedEdgeKey(mesh.triangles(f, (c + 1) % 3), mesh.triangles(f, c)));
   }
 
   // Tree and pseudo-normals for the current vertex positions.

@@ -10,17 +10,13 @@
 #include <glog/logging.h>
 #include <Eigen/Geometry>
 
+#include "ergo/contact/directed_edge_key.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/self_intersection.h"
 #include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
-
-std::uint64_t DirectedEdgeKey(int from, int to) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) |
-         static_cast<std::uint32_t>(to);
-}
 
 std::string EdgeName(int a, int b) {
   return "edge (" + std::to_string(std::min(a, b)) + ", " + std::to_string(std::max(a, b)) + ")";

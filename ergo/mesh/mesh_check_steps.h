@@ -15,6 +15,10 @@
 
 namespace ergo::check {
 
+// A triangle's height below this fraction of its longest edge, or a tet's |6V| below this
+// fraction of its longest edge cubed, is a degenerate shape to working precision.
+constexpr double kDegenerateShape = 1e-10;
+
 struct Context {
   const std::string& source;
   const MeshCheckOptions& options;

@@ -21,9 +21,8 @@ namespace ergo::check {
 
 namespace {
 
-// Height below this fraction of the longest edge, or twice the area below this fraction of
-// the squared mesh size, is zero to working precision (float data rounds at ~1e-7).
-constexpr double kDegenerateShape = 1e-10;
+// Twice the area below this fraction of the squared mesh size is zero to working precision
+// (float data rounds at ~1e-7); the height's threshold is kDegenerateShape.
 constexpr double kDegenerateArea = 1e-12;
 
 const char kSelfIntersectionBudgetFix[] =

@@ -18,8 +18,8 @@ namespace ergo::check {
 
 namespace {
 
-// |6V| below this fraction of the cube of the longest edge, or of the mesh size, is zero.
-constexpr double kDegenerateTetShape = 1e-10;
+// |6V| below this fraction of the cube of the mesh size is zero (the shape's threshold, a
+// fraction of the cube of the longest edge, is kDegenerateShape).
 constexpr double kDegenerateVolume = 1e-12;
 
 std::string Corners(const TetMesh& mesh, int t) {
@@ -60,7 +60,7 @@ void CheckVolume(const TetMesh& mesh, const Context& context, MeshCheckReport* r
     const long double size = diagonal;
     char volume[32];
     std::snprintf(volume, sizeof volume, "%.3Lg", six_volume / 6);
-    if (std::fabs(six_volume) <= kDegenerateTetShape * longest * longest * longest ||
+    if (std::fabs(six_volume) <= kDegenerateShape * longest * longest * longest ||
         std::fabs(six_volume) <= kDegenerateVolume * size * size * size) {
       if (flat.WantsExample()) {
         flat.Add(context.Element("tetrahedron", t) + " " + Corners(mesh, t) + " has volume " +
