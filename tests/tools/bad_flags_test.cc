@@ -131,6 +131,25 @@ std::vector<BadFlagCase> Cases(const std::string& dir) {
       {"ergo_bump",
        {"--contact_stiffness=nan", "--out=" + dir + "/bump.csv"},
        "--contact_stiffness"},
+      // ergo_calibrate (its curves' file is checked in ergo_calibrate_test.cc).
+      {"ergo_calibrate", {"--indenter_radius=0.005", out}, "--indentation"},
+      {"ergo_calibrate",
+       {"--indentation=" + dir + "/a_file", "--indenter_radius=0", out},
+       "--indenter_radius"},
+      {"ergo_calibrate",
+       {"--indentation=" + dir + "/a_file", "--indenter_radius=0.005", "--poisson_ratio=0.7", out},
+       "--poisson_ratio"},
+      {"ergo_calibrate",
+       {"--indentation=" + dir + "/a_file", "--indenter_radius=0.005", "--layer_base=glued", out},
+       "--layer_base"},
+      {"ergo_calibrate",
+       {"--indentation=" + dir + "/a_file", "--indenter_radius=0.005", "--half_space",
+        "--fit_depth", out},
+       "--half_space"},
+      {"ergo_calibrate",
+       {"--indentation=" + dir + "/a_file", "--indenter_radius=0.005", "--unit=inch", out},
+       "--unit"},
+      {"ergo_calibrate", {"--indentation=" + dir + "/a_file", "--indenter_radius=0.005"}, "--out"},
   };
   return cases;
 }
