@@ -18,18 +18,6 @@ constexpr double kSameCoordinateM = 1e-6;
 constexpr size_t kMaxSamples = 100000;
 constexpr size_t kMaxNameLength = 128;
 
-double ParseNumber(const TextReader& reader, const std::string& field, const std::string& column) {
-  double value = 0;
-  if (!ParseDouble(field, &value)) {
-    reader.Fail(column + " " + Quote(field) + " is not a number",
-                "write plain decimal numbers such as 0.5 or 1.5e-3 (no units, '.' as the "
-                "decimal point)");
-  }
-  if (!std::isfinite(value))
-    reader.Fail(column + " " + Quote(field) + " is not finite", "give a finite number");
-  return value;
-}
-
 }  // namespace
 
 IndentationCurves ReadIndentationCurvesCsv(const std::string& path, LengthUnit unit) {
@@ -98,15 +86,15 @@ IndentationCurves ReadIndentationCurvesCsv(const std::string& path, LengthUnit u
     if (name.size() > kMaxNameLength)
       reader.Fail("the sample's name is longer than 128 characters", "use a short name");
     const Eigen::Vector3d point =
-        metres * Eigen::Vector3d(ParseNumber(reader, fields[*column_x], "x"),
-                                 ParseNumber(reader, fields[*column_y], "y"),
-                                 ParseNumber(reader, fields[*column_z], "z"));
+        metres * Eigen::Vector3d(ParseCsvNumber(reader, fields[*column_x], "x"),
+                                 ParseCsvNumber(reader, fields[*column_y], "y"),
+                                 ParseCsvNumber(reader, fields[*column_z], "z"));
     const double indentation =
-        metres * ParseNumber(reader, fields[*column_indentation], "indentation");
-    const double force = ParseNumber(reader, fields[*column_force], "force");
+        metres * ParseCsvNumber(reader, fields[*column_indentation], "indentation");
+    const double force = ParseCsvNumber(reader, fields[*column_force], "force");
     double depth = 0;
     if (column_depth) {
-      depth = metres * ParseNumber(reader, fields[*column_depth], "depth");
+      depth = metres * ParseCsvNumber(reader, fields[*column_depth], "depth");
       if (depth <= 0)
         reader.Fail("depth " + Quote(fields[*column_depth]) + " is not positive",
                     "give the layer's measured depth, or leave the column out");

@@ -1,6 +1,9 @@
 #include "ergo/ergonomics/csv_row.h"
 
 #include <cctype>
+#include <cmath>
+
+#include "ergo/mesh/text_reader.h"
 
 namespace ergo {
 namespace {
@@ -36,6 +39,19 @@ std::vector<std::string> SplitCsvRow(std::string_view line) {
     }
   }
   return fields;
+}
+
+double ParseCsvNumber(const TextReader& reader, const std::string& field,
+                      const std::string& column) {
+  double value = 0;
+  if (!ParseDouble(field, &value)) {
+    reader.Fail(column + " " + Quote(field) + " is not a number",
+                "write plain decimal numbers such as 12.5 or 1.5e-2 (no units, '.' as the "
+                "decimal point)");
+  }
+  if (!std::isfinite(value))
+    reader.Fail(column + " " + Quote(field) + " is not finite", "give a finite number");
+  return value;
 }
 
 }  // namespace ergo

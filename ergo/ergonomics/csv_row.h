@@ -11,6 +11,13 @@
 
 namespace ergo {
 
+class TextReader;
+
 std::vector<std::string> SplitCsvRow(std::string_view line);
+
+// The finite number in `field` of the reader's current line; otherwise throws the reader's
+// InputError (file and line) naming `column` and how to write a number.
+double ParseCsvNumber(const TextReader& reader, const std::string& field,
+                      const std::string& column);
 
 }  // namespace ergo

@@ -19,18 +19,6 @@ constexpr double kSameCoordinateMm = 1e-3;
 constexpr size_t kMaxSensors = 100000;
 constexpr size_t kMaxNameLength = 128;
 
-double ParseNumber(const TextReader& reader, const std::string& field, const std::string& column) {
-  double value = 0;
-  if (!ParseDouble(field, &value)) {
-    reader.Fail(column + " " + Quote(field) + " is not a number",
-                "write plain decimal numbers such as 12.5 or 1.5e-2 (no units, '.' as the "
-                "decimal point)");
-  }
-  if (!std::isfinite(value))
-    reader.Fail(column + " " + Quote(field) + " is not finite", "give a finite number");
-  return value;
-}
-
 }  // namespace
 
 SensorReadings ReadSensorReadingsCsv(const std::string& path) {
@@ -93,9 +81,9 @@ SensorReadings ReadSensorReadingsCsv(const std::string& path) {
       reader.Fail("the sensor's name is empty", "name the sensor's location, e.g. heel_1");
     if (name.size() > kMaxNameLength)
       reader.Fail("the sensor's name is longer than 128 characters", "use a short name");
-    const Eigen::Vector2d point_mm(ParseNumber(reader, fields[*column_x], "x_mm"),
-                                   ParseNumber(reader, fields[*column_z], "z_mm"));
-    const double value = ParseNumber(reader, fields[*column_value], "value");
+    const Eigen::Vector2d point_mm(ParseCsvNumber(reader, fields[*column_x], "x_mm"),
+                                   ParseCsvNumber(reader, fields[*column_z], "z_mm"));
+    const double value = ParseCsvNumber(reader, fields[*column_value], "value");
     auto [found, inserted] = index_of.emplace(name, readings.sensors.size());
     if (inserted) {
       if (readings.sensors.size() >= kMaxSensors)
@@ -118,7 +106,7 @@ SensorReadings ReadSensorReadingsCsv(const std::string& path) {
     }
     record.values.push_back(value);
     if (column_reference)
-      record.reference.push_back(ParseNumber(reader, fields[*column_reference], "reference"));
+      record.reference.push_back(ParseCsvNumber(reader, fields[*column_reference], "reference"));
   }
   if (!header_read) {
     throw InputError(path, "", "the file holds no header and no readings",
