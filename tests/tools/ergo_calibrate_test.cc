@@ -122,6 +122,15 @@ TEST_F(ToolsCalibrate, FittedModuliAndDepthsComeBackAndBuildABody) {
   }
   const std::string md = testing::ReadTextFile(out + "/calibration.md");
   EXPECT_NE(md.find("| bottom |"), std::string::npos) << md;
+  // The picture's data: each curve, its fitted law (passing through the readings) and Hertz's.
+  const Json fits = ReadJsonFile(out + "/fits.json");
+  ASSERT_EQ(fits.size(), 3u);
+  EXPECT_EQ(fits[1]["model_force_n"].size(), 61u);
+  const double peak_reading = fits[1]["force_n"].back().get<double>();
+  const double peak_model = fits[1]["model_force_n"].back().get<double>();
+  EXPECT_NEAR(peak_model, peak_reading, 0.02 * peak_reading);                  // 0.5 % noise, 4σ
+  EXPECT_GT(peak_model, 1.3 * fits[1]["hertz_force_n"].back().get<double>());  // a 12 mm layer
+  if (!FindPythonWithMatplotlib().empty()) EXPECT_TRUE(fs::exists(out + "/calibration.png"));
 
   // The stiffness samples as ergo_body build takes them: every tet's E within the samples'
   // range (the spline is clamped to it) and both ends of it reached near the points.

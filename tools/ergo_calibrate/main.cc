@@ -7,9 +7,12 @@
 //   OUT/depth_samples.csv      x,y,z,depth for `--depth_samples` (the depths fitted or
 //                              measured; not for a half-space)
 //   OUT/calibration.json, calibration.md  every point's fit, its standard errors and warnings
+//   OUT/fits.json, calibration.png  each curve, its fitted law and Hertz's law with the same
+//                              E (tools/plot_calibration.py)
 // x, y, z and depths are written in --unit, the unit ergo_body must then be given.
 // Exit status: 0 every curve fitted, 1 a fit failed (which and why; nothing written),
 // 2 unusable input.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -26,6 +29,7 @@
 #include "ergo/mesh/atomic_file.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/json.h"
+#include "tools/common/child_process.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 
@@ -50,6 +54,9 @@ DEFINE_bool(half_space, false,
             "treat the tissue as deep (the Hertz half-space): fit E alone, write no depths");
 DEFINE_double(max_depth, 0.1, "--fit_depth: the largest depth the fit may reach, m");
 DEFINE_string(out, "", "output directory (required; replaced as a whole)");
+DEFINE_bool(plot, true,
+            "write calibration.png (each curve with its fit) with tools/plot_calibration.py "
+            "(python3 + matplotlib)");
 
 namespace ergo {
 namespace {
@@ -104,6 +111,41 @@ Json FitJson(const PointResult& result, double metres) {
   point["converged"] = fit.converged;
   point["note"] = fit.message;
   return point;
+}
+
+// The readings, the fitted law on a fine grid of δ and Hertz's law with the same E (what
+// the layer adds), per point, in SI units: what the picture draws.
+Json FitsJson(const std::vector<PointResult>& results, const SphericalIndenter& indenter) {
+  Json fits = Json::array();
+  for (const PointResult& result : results) {
+    const IndentationCurve& curve = *result.curve;
+    const IndentationFit& fit = result.fit;
+    Json point = Json::object();
+    point["sample"] = curve.name;
+    point["indentation_m"] = curve.indentation;
+    point["force_n"] = curve.force;
+    point["youngs_modulus_pa"] = fit.youngs_modulus;
+    point["youngs_modulus_stderr_pa"] = fit.youngs_modulus_stderr;
+    point["depth_m"] = std::isinf(fit.depth) ? Json(nullptr) : Json(fit.depth);
+    point["depth_stderr_m"] = fit.depth_stderr;
+    double deepest = 0;
+    for (double delta : curve.indentation) deepest = std::max(deepest, delta);
+    Json grid = Json::array(), law = Json::array(), hertz = Json::array();
+    for (int k = 0; k <= 60; ++k) {
+      const double delta = deepest * k / 60;
+      grid.push_back(delta);
+      law.push_back(LayeredIndentationForce(indenter, fit.youngs_modulus, fit.depth, delta).force);
+      hertz.push_back(LayeredIndentationForce(indenter, fit.youngs_modulus,
+                                              std::numeric_limits<double>::infinity(), delta)
+                          .force);
+    }
+    point["model_indentation_m"] = grid;
+    point["model_force_n"] = law;
+    point["hertz_force_n"] = hertz;
+    point["note"] = fit.message;
+    fits.push_back(point);
+  }
+  return fits;
 }
 
 void WriteSamples(const std::string& path, const std::vector<PointResult>& results, double metres,
@@ -236,11 +278,15 @@ int Run() {
   WriteFileAtomically(output.path() + "/calibration.md", [&](std::ostream& out) {
     out << MarkdownReport(results, FLAGS_unit, metres);
   });
+  WriteJsonFile(output.path() + "/fits.json", FitsJson(results, options.indenter));
+  const bool plotted =
+      FLAGS_plot && RunPictureScript("ergo_calibrate", "plot_calibration.py", output.path());
   std::string error;
   if (!output.Commit(&error)) throw InputError("--out", "", error, "");
   std::cout << "ergo_calibrate: " << results.size() << " points fitted; " << FLAGS_out
             << "/stiffness_samples.csv" << (FLAGS_half_space ? "" : ", depth_samples.csv")
-            << ", calibration.json, calibration.md\n";
+            << ", calibration.json, calibration.md, fits.json"
+            << (plotted ? ", calibration.png" : "") << "\n";
   return 0;
 }
 
