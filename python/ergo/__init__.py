@@ -13,6 +13,7 @@ F: #F x 3 int32, T: #T x 4 int32):
     problem = scene.problem()
     value = problem.evaluate(problem.initial_design())        # phi, its parts, gradient
     best = ergo.minimize(problem, optimizer="nlopt-lbfgs", max_evals=40)
+    fit = ergo.fit_indentation(delta, force, indenter_radius=0.008, fit_depth=True)
 
 Options are named as the command-line tools' flags (ergo_body build, ergo_simulate,
 ergo_optimize), with the same checks and messages; bad input raises ergo.InputError (a
@@ -23,12 +24,14 @@ for minimize() ergo.Interrupted (a KeyboardInterrupt) carrying the best design s
 import sys as _sys
 
 from ._ergo import (Body, DesignProblem, InputError, Scenario, check_mesh, check_surface,
-                    load_body, optimizers, read_mesh, read_tet_mesh, write_mesh, write_tet_mesh)
+                    fit_indentation, indentation_force, load_body, optimizers, read_mesh,
+                    read_tet_mesh, write_mesh, write_tet_mesh)
 from . import _ergo
 
 __all__ = ["Body", "DesignProblem", "InputError", "Interrupted", "Scenario", "build_body",
-           "check_mesh", "check_surface", "load_body", "minimize", "optimizers", "read_mesh",
-           "read_tet_mesh", "scenario", "simulate", "write_mesh", "write_tet_mesh"]
+           "check_mesh", "check_surface", "fit_indentation", "indentation_force", "load_body",
+           "minimize", "optimizers", "read_mesh", "read_tet_mesh", "scenario", "simulate",
+           "write_mesh", "write_tet_mesh"]
 
 
 class Interrupted(KeyboardInterrupt):

@@ -10,9 +10,10 @@
 
 namespace ergo::python {
 
-void BindMesh(pybind11::module_& m);    // read, write and check meshes
-void BindBody(pybind11::module_& m);    // bodies: build, load; one static equilibrium
-void BindDesign(pybind11::module_& m);  // scenarios, design problems, optimisers
+void BindMesh(pybind11::module_& m);         // read, write and check meshes
+void BindBody(pybind11::module_& m);         // bodies: build, load; one static equilibrium
+void BindDesign(pybind11::module_& m);       // scenarios, design problems, optimisers
+void BindCalibration(pybind11::module_& m);  // tissue stiffness and depth from indentation
 
 // "m" or "mm"; InputError naming the argument otherwise.
 LengthUnit UnitArgument(const std::string& unit, const char* argument);

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_ergo, m) {
   ergo::python::BindMesh(m);
   ergo::python::BindBody(m);
   ergo::python::BindDesign(m);
+  ergo::python::BindCalibration(m);
 }
