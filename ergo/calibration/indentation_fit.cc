@@ -10,9 +10,9 @@
 namespace ergo {
 namespace {
 
-// r = (F(δ; e^a, e^b) − F_measured) / scale over the parameters a = ln E, b = ln h; b is
-// ignored for the half-space.
-class IndentationResidual : public ceres::SizedCostFunction<1, 1, 1> {
+// r = (F(δ − c; e^a, e^b) − F_measured) / scale over a = ln E, b = ln h and c; b is ignored
+// for the half-space, and F = 0 before contact.
+class IndentationResidual : public ceres::SizedCostFunction<1, 1, 1, 1> {
  public:
   IndentationResidual(const SphericalIndenter& indenter, double indentation, double force,
                       double scale, bool half_space)
@@ -27,12 +27,16 @@ class IndentationResidual : public ceres::SizedCostFunction<1, 1, 1> {
     const double youngs = std::exp(parameters[0][0]);
     const double depth =
         half_space_ ? std::numeric_limits<double>::infinity() : std::exp(parameters[1][0]);
-    if (!std::isfinite(youngs) || youngs <= 0 || !(depth > 0)) return false;
-    const IndentationForce law = LayeredIndentationForce(indenter_, youngs, depth, indentation_);
+    const double travel = indentation_ - parameters[2][0];
+    if (!std::isfinite(youngs) || youngs <= 0 || !(depth > 0) || !std::isfinite(travel))
+      return false;
+    IndentationForce law;  // all zero before contact
+    if (travel > 0) law = LayeredIndentationForce(indenter_, youngs, depth, travel);
     residual[0] = (law.force - force_) / scale_;
     if (jacobians != nullptr) {
       if (jacobians[0] != nullptr) jacobians[0][0] = law.d_youngs_modulus * youngs / scale_;
       if (jacobians[1] != nullptr) jacobians[1][0] = half_space_ ? 0 : law.d_depth * depth / scale_;
+      if (jacobians[2] != nullptr) jacobians[2][0] = -law.d_indentation / scale_;
     }
     return std::isfinite(residual[0]);
   }
@@ -48,11 +52,12 @@ struct Readings {
   double max_force = 0, max_indentation = 0;
 };
 
-// E that fits best for a fixed h: F is linear in E.
+// E that fits best for a fixed h (and no contact offset): F is linear in E.
 double BestModulusForDepth(const Readings& readings, const SphericalIndenter& indenter,
                            double depth) {
   double numerator = 0, denominator = 0;
   for (size_t i = 0; i < readings.force.size(); ++i) {
+    if (!(readings.indentation[i] > 0)) continue;
     const double g = LayeredIndentationForce(indenter, 1.0, depth, readings.indentation[i]).force;
     numerator += g * readings.force[i];
     denominator += g * g;
@@ -61,7 +66,8 @@ double BestModulusForDepth(const Readings& readings, const SphericalIndenter& in
 }
 
 struct Solution {
-  double log_modulus = 0, log_depth = 0, cost = std::numeric_limits<double>::infinity();
+  double log_modulus = 0, log_depth = 0, contact_offset = 0;
+  double cost = std::numeric_limits<double>::infinity();
   bool usable = false, converged = false;
   std::string report;
 };
@@ -77,7 +83,13 @@ Solution Solve(const Readings& readings, const IndentationFitOptions& options, d
     problem.AddResidualBlock(
         new IndentationResidual(options.indenter, readings.indentation[i], readings.force[i],
                                 readings.max_force, half_space),
-        nullptr, &solution.log_modulus, &solution.log_depth);
+        nullptr, &solution.log_modulus, &solution.log_depth, &solution.contact_offset);
+  }
+  if (options.fit_contact_point) {
+    problem.SetParameterLowerBound(&solution.contact_offset, 0, -0.5 * readings.max_indentation);
+    problem.SetParameterUpperBound(&solution.contact_offset, 0, 0.5 * readings.max_indentation);
+  } else {
+    problem.SetParameterBlockConstant(&solution.contact_offset);
   }
   if (fit_depth) {
     // The layer is deeper than the deepest indentation.
@@ -117,26 +129,32 @@ IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
   IndentationFit fit;
   Readings readings;
   for (size_t i = 0; i < indentation.size() && i < force.size(); ++i) {
-    if (!(indentation[i] > 0)) continue;  // the contact point itself carries no information
+    // Without a fitted contact point, the readings at and before it carry no information.
+    if (!options.fit_contact_point && !(indentation[i] > 0)) continue;
     readings.indentation.push_back(indentation[i]);
     readings.force.push_back(force[i]);
     readings.max_force = std::max(readings.max_force, force[i]);
     readings.max_indentation = std::max(readings.max_indentation, indentation[i]);
   }
   fit.readings = static_cast<int>(readings.force.size());
-  const int parameters = options.fit_depth ? 2 : 1;
-  const int needed = options.fit_depth ? 4 : 2;
+  const int parameters = 1 + options.fit_depth + options.fit_contact_point;
+  const int needed = 2 * parameters;
   if (fit.readings < needed) {
-    fit.message = "has " + std::to_string(fit.readings) + " readings beyond the contact point; " +
-                  (options.fit_depth ? "fitting E and the depth" : "fitting E") + " needs " +
-                  std::to_string(needed);
+    const std::string unknowns = !options.fit_depth
+                                     ? (options.fit_contact_point ? "E and the contact point" : "E")
+                                 : options.fit_contact_point ? "E, the depth and the contact point"
+                                                             : "E and the depth";
+    fit.message = "has " + std::to_string(fit.readings) +
+                  (options.fit_contact_point ? " readings" : " readings beyond the contact point") +
+                  "; fitting " + unknowns + " needs " + std::to_string(needed);
     return fit;
   }
   if (!(readings.max_force > 0)) {
     fit.message = "has no positive force: the indenter never pressed";
     return fit;
   }
-  if (!options.fit_depth && !(options.depth > readings.max_indentation)) {
+  if (!options.fit_depth && !options.fit_contact_point &&
+      !(options.depth > readings.max_indentation)) {
     fit.message = "is indented deeper than the layer's depth";
     return fit;
   }
@@ -164,31 +182,47 @@ IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
   if (!best.converged) fit.message = "stopped before convergence (" + best.report + ")";
   fit.youngs_modulus = std::exp(best.log_modulus);
   fit.depth = options.fit_depth ? std::exp(best.log_depth) : options.depth;
+  fit.contact_offset = best.contact_offset;
 
-  // Residuals and the Gauss–Newton covariance at the solution.
-  Eigen::MatrixXd jacobian(fit.readings, parameters);
+  // Residuals and the Gauss–Newton covariance at the solution, over (ln E[, ln h][, c]).
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(fit.readings, parameters);
   Eigen::VectorXd residual(fit.readings);
+  double deepest = 0;
   for (int i = 0; i < fit.readings; ++i) {
-    const IndentationForce law = LayeredIndentationForce(options.indenter, fit.youngs_modulus,
-                                                         fit.depth, readings.indentation[i]);
+    const double travel = readings.indentation[i] - fit.contact_offset;
+    IndentationForce law;
+    if (travel > 0)
+      law = LayeredIndentationForce(options.indenter, fit.youngs_modulus, fit.depth, travel);
     residual[i] = law.force - readings.force[i];
-    jacobian(i, 0) = law.d_youngs_modulus * fit.youngs_modulus;     // ∂F/∂ln E
-    if (parameters == 2) jacobian(i, 1) = law.d_depth * fit.depth;  // ∂F/∂ln h
+    int column = 0;
+    jacobian(i, column++) = law.d_youngs_modulus * fit.youngs_modulus;          // ∂F/∂ln E
+    if (options.fit_depth) jacobian(i, column++) = law.d_depth * fit.depth;     // ∂F/∂ln h
+    if (options.fit_contact_point) jacobian(i, column++) = -law.d_indentation;  // ∂F/∂c
     fit.max_chi = std::max(fit.max_chi, law.chi);
+    deepest = std::max(deepest, travel);
   }
-  fit.max_strain = std::isinf(fit.depth) ? 0 : readings.max_indentation / fit.depth;
+  fit.max_strain = std::isinf(fit.depth) ? 0 : deepest / fit.depth;
   fit.rms_residual = std::sqrt(residual.squaredNorm() / fit.readings);
   fit.relative_rms = fit.rms_residual / readings.max_force;
   const int dof = fit.readings - parameters;
   if (dof <= 0) {
-    fit.youngs_modulus_stderr = fit.depth_stderr = std::numeric_limits<double>::quiet_NaN();
+    fit.youngs_modulus_stderr = fit.depth_stderr = fit.contact_offset_stderr =
+        std::numeric_limits<double>::quiet_NaN();
   } else {
     const double variance = residual.squaredNorm() / dof;
     const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
     const Eigen::MatrixXd covariance =
         variance * normal.completeOrthogonalDecomposition().pseudoInverse();
-    fit.youngs_modulus_stderr = fit.youngs_modulus * std::sqrt(std::max(0.0, covariance(0, 0)));
-    if (parameters == 2) fit.depth_stderr = fit.depth * std::sqrt(std::max(0.0, covariance(1, 1)));
+    int column = 0;
+    fit.youngs_modulus_stderr =
+        fit.youngs_modulus * std::sqrt(std::max(0.0, covariance(column, column)));
+    ++column;
+    if (options.fit_depth) {
+      fit.depth_stderr = fit.depth * std::sqrt(std::max(0.0, covariance(column, column)));
+      ++column;
+    }
+    if (options.fit_contact_point)
+      fit.contact_offset_stderr = std::sqrt(std::max(0.0, covariance(column, column)));
   }
   if (options.fit_depth) {
     fit.depth_at_bound = fit.depth > 0.999 * options.max_depth;
@@ -204,12 +238,16 @@ IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
   }
   if (fit.message.empty() && fit.max_chi > 1) {
     // Dimitriadis et al. validated the series for χ < 1.
-    fit.message = "indented beyond the law's range (largest √(Rδ)/h " +
-                  std::to_string(fit.max_chi).substr(0, 4) + " > 1)";
+    char value[32];
+    std::snprintf(value, sizeof(value), "%.2f", fit.max_chi);
+    fit.message =
+        std::string("indented beyond the law's range (largest √(Rδ)/h ") + value + " > 1)";
   } else if (fit.message.empty() && fit.max_strain > 0.25) {
     // The law is small-strain; ergo's neo-Hookean FEM is a few per cent stiffer by δ/h = 0.2
     // (ergo/calibration/README.md), and more beyond.
-    fit.message = "indented to δ/h = " + std::to_string(fit.max_strain).substr(0, 4) +
+    char value[32];
+    std::snprintf(value, sizeof(value), "%.2f", fit.max_strain);
+    fit.message = std::string("indented to δ/h = ") + value +
                   ": beyond about 0.2 finite strain stiffens the tissue and E reads high";
   }
   return fit;
@@ -231,6 +269,11 @@ std::string DescribeFit(const IndentationFit& fit) {
       line += text;
     }
     line += " mm";
+  }
+  if (fit.contact_offset != 0 || fit.contact_offset_stderr > 0) {
+    std::snprintf(text, sizeof(text), ", contact at %+.3g ± %.2g mm", 1e3 * fit.contact_offset,
+                  1e3 * fit.contact_offset_stderr);
+    line += text;
   }
   std::snprintf(text, sizeof(text), ", rms %.2g %% of the peak force", 100 * fit.relative_rms);
   line += text;

@@ -1,9 +1,10 @@
-// Tissue calibration (paper §3.1): Young's modulus — and, when asked, the layer's depth —
-// of one measured point from its force–indentation curve, by least squares on the layered
-// indentation law (layered_indentation.h) with Ceres. The unknowns are ln E and ln h (both
-// positive, and of very different sizes); the residuals are the force misfits divided by
-// the curve's largest force. Standard errors come from the Gauss–Newton covariance
-// σ²(JᵀJ)⁻¹ at the solution with σ² = Σr²/(n − p).
+// Tissue calibration (paper §3.1): Young's modulus — and, when asked, the layer's depth and
+// where the tip first touched — of one measured point from its force–indentation curve, by
+// least squares on the layered indentation law (layered_indentation.h) with Ceres. The
+// unknowns are ln E and ln h (both positive, and of very different sizes) and the contact
+// offset c (the logged travel at first contact: the law is taken at δ − c, zero before it);
+// the residuals are the force misfits divided by the curve's largest force. Standard errors come
+// from the Gauss–Newton covariance σ²(JᵀJ)⁻¹ at the solution with σ² = Σr²/(n − p).
 #pragma once
 
 #include <limits>
@@ -25,6 +26,10 @@ struct IndentationFitOptions {
   bool fit_depth = false;
   double depth = std::numeric_limits<double>::infinity();  // m
   double max_depth = 0.2;                                  // m, the fitted depth's bound
+  // true: the contact offset c is fitted too, within ± half the deepest travel, and every
+  // reading counts (those before contact say where it is); false: c = 0 and readings at
+  // δ ≤ 0 are left out.
+  bool fit_contact_point = false;
   int max_iterations = 200;
 };
 
@@ -36,22 +41,26 @@ struct IndentationFit {
   double youngs_modulus_stderr = 0;  // Pa; NaN when the readings leave no degree of freedom
   double depth_stderr = 0;           // m; 0 when given
   bool depth_at_bound = false;       // the fitted depth ended on max_depth: not determined
+  double contact_offset = 0;         // m: c, the logged travel at first contact (0 if not fitted)
+  double contact_offset_stderr = 0;  // m
   double rms_residual = 0;           // N
   double relative_rms = 0;           // rms / largest force
-  double max_chi = 0;                // largest √(Rδ)/h of the readings
-  double max_strain = 0;             // largest δ/h
-  int readings = 0;                  // readings with δ > 0 used
+  double max_chi = 0;                // largest √(R(δ − c))/h of the readings
+  double max_strain = 0;             // largest (δ − c)/h
+  int readings = 0;                  // readings used
 };
 
-// Fits the curve (δ_i, F_i). Needs readings with δ > 0: at least 2 (E only) or 4 (E and h)
-// and a largest force > 0; otherwise returns converged = false with the reason.
+// Fits the curve (δ_i, F_i). Needs readings: at least 2 (E only), 4 (E and h), one more with
+// the contact point, and a largest force > 0; otherwise returns converged = false with the
+// reason.
 IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
                                    const std::vector<double>& force,
                                    const IndentationFitOptions& options);
 
-// The fit's residual for one reading, r = (F(δ; e^a, e^b) − force) / scale over the
-// parameter blocks a = ln E and b = ln h (b is ignored when half_space), with its analytic
-// Jacobian. The caller owns it (a ceres::Problem takes ownership).
+// The fit's residual for one reading, r = (F(δ − c; e^a, e^b) − force) / scale over the
+// parameter blocks a = ln E, b = ln h (ignored when half_space) and c (m), F = 0 for δ ≤ c
+// (C¹ there: F grows as (δ − c)^{3/2}), with its analytic Jacobian. The caller owns it (a
+// ceres::Problem takes ownership).
 ceres::CostFunction* NewIndentationResidual(const SphericalIndenter& indenter, double indentation,
                                             double force, double scale, bool half_space);
 

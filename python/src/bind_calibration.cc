@@ -54,6 +54,8 @@ py::dict FitDict(const IndentationFit& fit) {
   result["depth"] = std::isinf(fit.depth) ? py::object(py::none()) : py::float_(fit.depth);
   result["depth_stderr"] = fit.depth_stderr;
   result["depth_at_bound"] = fit.depth_at_bound;
+  result["contact_offset"] = fit.contact_offset;
+  result["contact_offset_stderr"] = fit.contact_offset_stderr;
   result["rms_residual"] = fit.rms_residual;
   result["relative_rms"] = fit.relative_rms;
   result["max_chi"] = fit.max_chi;
@@ -94,7 +96,7 @@ void BindCalibration(py::module_& m) {
       "fit_indentation",
       [](const std::vector<double>& indentation, const std::vector<double>& force,
          double indenter_radius, double poisson_ratio, const std::string& layer_base,
-         bool fit_depth, const py::object& depth, double max_depth) {
+         bool fit_depth, const py::object& depth, double max_depth, bool fit_contact_point) {
         if (indentation.size() != force.size())
           throw InputError("force", "",
                            "has " + std::to_string(force.size()) + " values, indentation " +
@@ -112,6 +114,7 @@ void BindCalibration(py::module_& m) {
         if (!(max_depth > 0))
           throw InputError("max_depth", "", "must be positive metres", "e.g. max_depth=0.1");
         options.max_depth = max_depth;
+        options.fit_contact_point = fit_contact_point;
         IndentationFit fit;
         {
           py::gil_scoped_release release;
@@ -122,7 +125,9 @@ void BindCalibration(py::module_& m) {
       py::arg("indentation"), py::arg("force"), py::arg("indenter_radius"),
       py::arg("poisson_ratio") = 0.45, py::arg("layer_base") = "bonded",
       py::arg("fit_depth") = false, py::arg("depth") = py::none(), py::arg("max_depth") = 0.1,
-      "Young's modulus (and, with fit_depth=True, the layer's depth) of one point from its\n"
+      py::arg("fit_contact_point") = false,
+      "Young's modulus (and, with fit_depth=True, the layer's depth; with\n"
+      "fit_contact_point=True, the logged indentation at first contact) of one point from its\n"
       "force (N) - indentation (m) curve, as ergo_calibrate fits it: a dict with\n"
       "youngs_modulus, depth (None for the half-space), their standard errors, converged,\n"
       "message, relative_rms, max_chi, max_strain, readings and a one-line summary.");

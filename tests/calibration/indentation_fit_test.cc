@@ -159,23 +159,57 @@ TEST(Calibration, CurvesThatCannotDetermineTheUnknownsSaySo) {
   EXPECT_NE(fit.message.find("no positive force"), std::string::npos) << fit.message;
 }
 
+TEST(Calibration, AnOffLoggerZeroIsFoundWithTheContactPoint) {
+  // The logger's zero 0.4 mm before first contact (readings of no force first) and 0.3 mm
+  // after it (the first reading already pressed): F = law(δ − c).
+  for (double offset : {4e-4, -3e-4}) {
+    Curve curve;
+    for (int i = 0; i <= 40; ++i) {
+      const double logged = -5e-4 + 6.5e-3 * i / 40;
+      curve.indentation.push_back(logged);
+      const double travel = logged - offset;
+      curve.force.push_back(
+          travel > 0 ? LayeredIndentationForce(Indenter(), kYoungs, kDepth, travel).force : 0);
+    }
+    IndentationFitOptions options;
+    options.indenter = Indenter();
+    options.fit_depth = true;
+    options.fit_contact_point = true;
+    const IndentationFit fit = FitIndentationCurve(curve.indentation, curve.force, options);
+    ASSERT_TRUE(fit.converged) << fit.message;
+    EXPECT_EQ(fit.readings, 41);  // the approach counts: it says where contact is
+    EXPECT_NEAR(fit.contact_offset, offset, 1e-8) << DescribeFit(fit);
+    EXPECT_NEAR(fit.youngs_modulus, kYoungs, 1e-5 * kYoungs) << DescribeFit(fit);
+    EXPECT_NEAR(fit.depth, kDepth, 1e-5 * kDepth) << DescribeFit(fit);
+    // Taking the logger's zero as contact instead misfits the same curve visibly.
+    options.fit_contact_point = false;
+    const IndentationFit naive = FitIndentationCurve(curve.indentation, curve.force, options);
+    EXPECT_GT(naive.relative_rms, 1e-3) << DescribeFit(naive);
+    EXPECT_GT(std::abs(naive.youngs_modulus / kYoungs - 1), 0.02) << DescribeFit(naive);
+  }
+}
+
 TEST(Calibration, IndentationResidualPassesTheGradientChecker) {
-  // The residual is a polynomial in χ = √(Rδ)/h times δ^{3/2}; central differences of it
-  // converge to the analytic ∂r/∂ln h to 1e-9 by a step of 1e-4. Ceres's default Ridders
-  // start (1e-2 of the parameter, |ln h| ≈ 4.4) leaves 7e-5; a start of 1e-4 leaves < 1e-9.
+  // The residual is a polynomial in χ = √(Rδ)/h times δ^{3/2}: smooth in ln E and ln h,
+  // and C¹ in the contact offset c (0.2 mm here), whose kink sits 0.1 mm or more from every
+  // reading. Ceres's Ridders differences start at their relative step times the parameter,
+  // or at the step itself for a parameter near zero — as c in metres is — so the default
+  // start (1e-2) would step across the kink; a start of 1e-7 stays on one side (central
+  // differences of this residual agree with the analytic values to 1e-9 there). The reading
+  // before contact (δ = 0.1 mm) has r and ∂r all zero.
   for (bool half_space : {false, true}) {
-    for (double indentation : {3e-4, 2e-3, 6e-3}) {
+    for (double indentation : {1e-4, 3e-4, 2e-3, 6e-3}) {
       std::unique_ptr<ceres::CostFunction> residual(
           NewIndentationResidual(Indenter(), indentation, 0.2, 0.5, half_space));
       ceres::NumericDiffOptions numeric;
-      numeric.ridders_relative_initial_step_size = 1e-4;
-      const std::vector<const ceres::Manifold*>* euclidean = nullptr;  // both blocks are R
+      numeric.ridders_relative_initial_step_size = 1e-7;
+      const std::vector<const ceres::Manifold*>* euclidean = nullptr;  // every block is R
       ceres::GradientChecker checker(residual.get(), euclidean, numeric);
-      double log_youngs = std::log(3e4), log_depth = std::log(0.012);
-      const double* parameters[] = {&log_youngs, &log_depth};
+      double log_youngs = std::log(3e4), log_depth = std::log(0.012), offset = 2e-4;
+      const double* parameters[] = {&log_youngs, &log_depth, &offset};
       ceres::GradientChecker::ProbeResults results;
       EXPECT_TRUE(checker.Probe(parameters, 1e-7, &results))
-          << results.error_log << " (half space " << half_space << ")";
+          << results.error_log << " (half space " << half_space << ", delta " << indentation << ")";
     }
   }
 }

@@ -28,6 +28,18 @@ def test_a_curve_of_the_law_gives_back_its_modulus_and_depth():
     assert half["youngs_modulus"] > 1.2 * 4.5e4  # a half-space reads the layer too stiff
 
 
+def test_a_logger_zero_before_contact_is_found():
+    logged = np.linspace(-0.0005, 0.006, 41)
+    force = [0.0 if d <= 0.0004 else f for d, f in
+             zip(logged, ergo.indentation_force(4.5e4, 0.017, np.maximum(logged - 0.0004, 0),
+                                                indenter_radius=0.01))]
+    fit = ergo.fit_indentation(logged, force, indenter_radius=0.01, fit_depth=True,
+                               fit_contact_point=True)
+    assert fit["converged"], fit["summary"]
+    assert fit["contact_offset"] == pytest.approx(0.0004, abs=1e-8)
+    assert fit["youngs_modulus"] == pytest.approx(4.5e4, rel=1e-5)
+
+
 def test_bad_arguments_name_themselves():
     with pytest.raises(ergo.InputError, match="indenter_radius"):
         ergo.fit_indentation([0.001, 0.002], [0.1, 0.3], indenter_radius=0)

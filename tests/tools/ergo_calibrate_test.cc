@@ -170,6 +170,21 @@ TEST_F(ToolsCalibrate, AGivenDepthOrAHalfSpaceFitsTheModulusAlone) {
                              "--half_space", "--out=" + scratch_ + "/deep"});
   ASSERT_EQ(deep.status, 0) << deep.output;
   EXPECT_FALSE(fs::exists(scratch_ + "/deep/depth_samples.csv"));
+  // The contact point fitted too: these curves start at contact, so each offset is 0 within
+  // 4 of its standard errors.
+  const ToolRun contact =
+      Run("ergo_calibrate", {"--indentation=" + curves, "--unit=mm", "--indenter_radius=0.008",
+                             "--fit_depth", "--fit_contact_point", "--out=" + scratch_ + "/c"});
+  ASSERT_EQ(contact.status, 0) << contact.output;
+  const Json with_contact = ReadJsonFile(scratch_ + "/c/calibration.json");
+  EXPECT_EQ(with_contact["contact_point"], "fitted");
+  for (const Json& point : with_contact["points"]) {
+    EXPECT_EQ(point["readings"], 25);  // the reading at 0 counts now
+    EXPECT_LT(std::abs(point["contact_offset"].get<double>()),
+              4 * point["contact_offset_stderr"].get<double>())
+        << point["sample"];
+  }
+  EXPECT_NE(testing::ReadTextFile(scratch_ + "/c/calibration.md").find(" ± "), std::string::npos);
   // A half-space reads the 12 mm layer stiffer than it is.
   const Json half = ReadJsonFile(scratch_ + "/deep/calibration.json");
   EXPECT_GT(half["points"][1]["youngs_modulus_pa"].get<double>(), 1.2 * 6.0e4);

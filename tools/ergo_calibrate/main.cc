@@ -53,6 +53,9 @@ DEFINE_double(depth, 0,
 DEFINE_bool(half_space, false,
             "treat the tissue as deep (the Hertz half-space): fit E alone, write no depths");
 DEFINE_double(max_depth, 0.1, "--fit_depth: the largest depth the fit may reach, m");
+DEFINE_bool(fit_contact_point, false,
+            "fit where the tip first touched too (the logged indentation at contact, within "
+            "± half the deepest travel); else the file's indentation 0 is first contact");
 DEFINE_string(out, "", "output directory (required; replaced as a whole)");
 DEFINE_bool(plot, true,
             "write calibration.png (each curve with its fit) with tools/plot_calibration.py "
@@ -104,6 +107,10 @@ Json FitJson(const PointResult& result, double metres) {
                                                     : "--depth";
     point["depth_stderr"] = fit.depth_stderr / metres;
   }
+  if (FLAGS_fit_contact_point) {
+    point["contact_offset"] = fit.contact_offset / metres;
+    point["contact_offset_stderr"] = fit.contact_offset_stderr / metres;
+  }
   point["rms_residual_n"] = fit.rms_residual;
   point["relative_rms"] = fit.relative_rms;
   point["max_chi"] = fit.max_chi;
@@ -128,15 +135,21 @@ Json FitsJson(const std::vector<PointResult>& results, const SphericalIndenter& 
     point["youngs_modulus_stderr_pa"] = fit.youngs_modulus_stderr;
     point["depth_m"] = std::isinf(fit.depth) ? Json(nullptr) : Json(fit.depth);
     point["depth_stderr_m"] = fit.depth_stderr;
-    double deepest = 0;
-    for (double delta : curve.indentation) deepest = std::max(deepest, delta);
+    point["contact_offset_m"] = fit.contact_offset;
+    // From the first reading (or first contact) to the last, the law at δ − c.
+    double first = fit.contact_offset, last = fit.contact_offset;
+    for (double delta : curve.indentation) {
+      first = std::min(first, delta);
+      last = std::max(last, delta);
+    }
     Json grid = Json::array(), law = Json::array(), hertz = Json::array();
     for (int k = 0; k <= 60; ++k) {
-      const double delta = deepest * k / 60;
+      const double delta = first + (last - first) * k / 60;
+      const double travel = std::max(0.0, delta - fit.contact_offset);
       grid.push_back(delta);
-      law.push_back(LayeredIndentationForce(indenter, fit.youngs_modulus, fit.depth, delta).force);
+      law.push_back(LayeredIndentationForce(indenter, fit.youngs_modulus, fit.depth, travel).force);
       hertz.push_back(LayeredIndentationForce(indenter, fit.youngs_modulus,
-                                              std::numeric_limits<double>::infinity(), delta)
+                                              std::numeric_limits<double>::infinity(), travel)
                           .force);
     }
     point["model_indentation_m"] = grid;
@@ -177,8 +190,8 @@ std::string MarkdownReport(const std::vector<PointResult>& results, const std::s
                            : "given")
      << ".\n\n";
   md << "| sample | x, y, z (" << unit
-     << ") | readings | E (kPa) | ± | depth (mm) | ± | rms (% of peak) "
-        "| max χ | max δ/h | note |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << ") | readings | E (kPa) | ± | depth (mm) | ± | contact at (mm) | rms (% of peak) "
+        "| max χ | max δ/h | note |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const PointResult& result : results) {
     const IndentationFit& fit = result.fit;
     const Eigen::Vector3d p = result.curve->point / metres;
@@ -188,8 +201,11 @@ std::string MarkdownReport(const std::vector<PointResult>& results, const std::s
        << Significant(1e-3 * fit.youngs_modulus_stderr, 2) << " | "
        << (std::isinf(fit.depth) ? "∞" : Significant(1e3 * fit.depth, 4)) << " | "
        << (FLAGS_fit_depth ? Significant(1e3 * fit.depth_stderr, 2) : "–") << " | "
-       << Significant(100 * fit.relative_rms, 2) << " | " << Significant(fit.max_chi, 3) << " | "
-       << Significant(fit.max_strain, 3) << " | " << fit.message << " |\n";
+       << (FLAGS_fit_contact_point ? Significant(1e3 * fit.contact_offset, 3) + " ± " +
+                                         Significant(1e3 * fit.contact_offset_stderr, 2)
+                                   : "0 (given)")
+       << " | " << Significant(100 * fit.relative_rms, 2) << " | " << Significant(fit.max_chi, 3)
+       << " | " << Significant(fit.max_strain, 3) << " | " << fit.message << " |\n";
   }
   md << "\nThe law is small-strain linear elasticity; ergo's tissue is neo-Hookean. Readings with "
         "χ = √(Rδ)/h above 1 or δ/h above about 0.2 lie beyond where the two agree "
@@ -236,6 +252,7 @@ int Run() {
   options.indenter.base = FLAGS_layer_base == "bonded" ? LayerBase::kBonded : LayerBase::kSliding;
   options.fit_depth = FLAGS_fit_depth;
   options.max_depth = FLAGS_max_depth;
+  options.fit_contact_point = FLAGS_fit_contact_point;
   std::vector<PointResult> results;
   std::vector<std::string> failures;
   for (const IndentationCurve& curve : curves.curves) {
@@ -269,6 +286,7 @@ int Run() {
   report["poisson_ratio"] = FLAGS_poisson_ratio;
   report["layer_base"] = FLAGS_layer_base;
   report["depth_mode"] = FLAGS_half_space ? "half-space" : FLAGS_fit_depth ? "fitted" : "given";
+  report["contact_point"] = FLAGS_fit_contact_point ? "fitted" : "indentation 0";
   report["points"] = Json::array();
   for (const PointResult& result : results) report["points"].push_back(FitJson(result, metres));
   WriteSamples(output.path() + "/stiffness_samples.csv", results, metres, false, FLAGS_unit);
