@@ -153,6 +153,10 @@ IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
     fit.message = "has no positive force: the indenter never pressed";
     return fit;
   }
+  if (!(readings.max_indentation > 0)) {
+    fit.message = "has no reading beyond indentation 0: the tip never pressed in";
+    return fit;
+  }
   if (!options.fit_depth && !options.fit_contact_point &&
       !(options.depth > readings.max_indentation)) {
     fit.message = "is indented deeper than the layer's depth";

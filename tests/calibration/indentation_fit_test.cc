@@ -151,6 +151,12 @@ TEST(Calibration, CurvesThatCannotDetermineTheUnknownsSaySo) {
   fit = FitIndentationCurve(short_curve.indentation, short_curve.force, options);
   EXPECT_FALSE(fit.converged);
   EXPECT_NE(fit.message.find("deeper than the layer"), std::string::npos) << fit.message;
+  // Only the approach, with the contact point fitted: no travel to fit.
+  options.fit_contact_point = true;
+  fit = FitIndentationCurve({-2e-4, -1e-4, 0.0, 0.0}, {0.0, 0.01, 0.02, 0.03}, options);
+  EXPECT_FALSE(fit.converged);
+  EXPECT_NE(fit.message.find("no reading beyond indentation 0"), std::string::npos) << fit.message;
+  options.fit_contact_point = false;
   // No force at all.
   const std::vector<double> zeros(short_curve.indentation.size(), 0.0);
   options.depth = kDepth;
