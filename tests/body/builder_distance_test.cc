@@ -29,13 +29,17 @@ TEST(Body, SurfaceDistanceMatchesTheSphereUpToTheFacets) {
     EXPECT_NEAR(d, exact, 2e-4) << p.transpose();
     EXPECT_NEAR(closest.distance, std::abs(d), 1e-15);
     EXPECT_NEAR(closest.point.norm(), kRadius, 2e-4);
-    if (std::abs(exact) > 2e-4) EXPECT_EQ(distance.Inside(p), exact < 0);
+    if (std::abs(exact) > 2e-4) {
+      EXPECT_EQ(distance.Inside(p), exact < 0);
+    }
     // NearestWithin agrees with Nearest when the nearest point is within the radius,
     // including balls that swallow whole triangles.
     for (double radius : {0.005, 0.05, 0.3}) {
       const std::optional<SurfaceDistance::Closest> within = distance.NearestWithin(p, radius);
       EXPECT_EQ(within.has_value(), closest.distance <= radius) << radius;
-      if (within) EXPECT_NEAR(within->distance, closest.distance, 1e-15);
+      if (within) {
+        EXPECT_NEAR(within->distance, closest.distance, 1e-15);
+      }
     }
   }
   // The centre: 0.1 from everything; a ball of 0.11 contains the whole surface.

@@ -28,7 +28,9 @@ TEST(Mesh, PinchedVertexIsSplitIntoOneCopyPerFan) {
   for (int f = 4; f < 8; ++f) {
     for (int k = 0; k < 3; ++k) {
       EXPECT_NE(result.triangles(f, k), 0);
-      if (two.triangles(f, k) != 0) EXPECT_EQ(result.triangles(f, k), two.triangles(f, k));
+      if (two.triangles(f, k) != 0) {
+        EXPECT_EQ(result.triangles(f, k), two.triangles(f, k));
+      }
     }
   }
   const TriMesh sphere = MakeIcosphere(1.0, 2);
