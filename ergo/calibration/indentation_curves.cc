@@ -26,72 +26,42 @@ IndentationCurves ReadIndentationCurvesCsv(const std::string& path, LengthUnit u
   TextReader reader(path, text);
   IndentationCurves curves;
   curves.source = path;
-  std::optional<int> column_sample, column_x, column_y, column_z, column_indentation, column_force,
-      column_depth;
-  size_t column_count = 0;
-  bool header_read = false;
+  std::optional<CsvHeader> header;
+  int column_sample = 0, column_x = 0, column_y = 0, column_z = 0, column_indentation = 0,
+      column_force = 0;
+  std::optional<int> column_depth;
   std::map<std::string, size_t> index_of;
-  std::string_view line;
-  while (reader.NextLine(&line)) {
-    reader.RequireRecordLength(line);
-    std::string_view content = line;
-    while (!content.empty() && (content.front() == ' ' || content.front() == '\t'))
-      content.remove_prefix(1);
-    if (content.empty() || content.front() == '#' ||
-        content.find_first_not_of(" \t\r,;") == std::string_view::npos)
-      continue;
-    const std::vector<std::string> fields = SplitCsvRow(content);
-    if (!header_read) {
-      header_read = true;
-      column_count = fields.size();
-      const std::map<std::string, std::optional<int>*> slots = {
-          {"sample", &column_sample},
-          {"x", &column_x},
-          {"y", &column_y},
-          {"z", &column_z},
-          {"indentation", &column_indentation},
-          {"force", &column_force},
-          {"depth", &column_depth}};
-      for (size_t k = 0; k < fields.size(); ++k) {
-        const auto slot = slots.find(ToLower(fields[k]));
-        if (slot == slots.end()) {
-          curves.ignored_columns.push_back(fields[k]);
-          continue;
-        }
-        if (slot->second->has_value())
-          reader.Fail("the column " + Quote(fields[k]) + " is named twice",
-                      "name each column once");
-        *slot->second = static_cast<int>(k);
-      }
-      for (const auto& [column, name] :
-           {std::pair{&column_sample, "sample"}, std::pair{&column_x, "x"},
-            std::pair{&column_y, "y"}, std::pair{&column_z, "z"},
-            std::pair{&column_indentation, "indentation"}, std::pair{&column_force, "force"}}) {
-        if (!column->has_value()) {
-          reader.Fail(std::string("the header has no column '") + name + "'",
-                      std::string("the first row must name the columns ") + kColumns);
-        }
-      }
+  std::vector<std::string> fields;
+  while (NextCsvRow(reader, &fields)) {
+    if (!header) {
+      header.emplace(
+          reader, fields,
+          std::vector<std::string>{"sample", "x", "y", "z", "indentation", "force", "depth"},
+          kColumns);
+      column_sample = header->Require(reader, "sample");
+      column_x = header->Require(reader, "x");
+      column_y = header->Require(reader, "y");
+      column_z = header->Require(reader, "z");
+      column_indentation = header->Require(reader, "indentation");
+      column_force = header->Require(reader, "force");
+      column_depth = header->Find("depth");
       curves.has_depth = column_depth.has_value();
+      curves.ignored_columns = header->ignored();
       continue;
     }
-    if (fields.size() != column_count) {
-      reader.Fail("has " + std::to_string(fields.size()) + " fields, the header " +
-                      std::to_string(column_count),
-                  "give every row the header's columns (" + std::string(kColumns) + ")");
-    }
-    const std::string& name = fields[*column_sample];
+    header->CheckRow(reader, fields);
+    const std::string& name = fields[column_sample];
     if (name.empty())
       reader.Fail("the sample's name is empty", "name the measured point, e.g. heel_1");
     if (name.size() > kMaxNameLength)
       reader.Fail("the sample's name is longer than 128 characters", "use a short name");
     const Eigen::Vector3d point =
-        metres * Eigen::Vector3d(ParseCsvNumber(reader, fields[*column_x], "x"),
-                                 ParseCsvNumber(reader, fields[*column_y], "y"),
-                                 ParseCsvNumber(reader, fields[*column_z], "z"));
+        metres * Eigen::Vector3d(ParseCsvNumber(reader, fields[column_x], "x"),
+                                 ParseCsvNumber(reader, fields[column_y], "y"),
+                                 ParseCsvNumber(reader, fields[column_z], "z"));
     const double indentation =
-        metres * ParseCsvNumber(reader, fields[*column_indentation], "indentation");
-    const double force = ParseCsvNumber(reader, fields[*column_force], "force");
+        metres * ParseCsvNumber(reader, fields[column_indentation], "indentation");
+    const double force = ParseCsvNumber(reader, fields[column_force], "force");
     double depth = 0;
     if (column_depth) {
       depth = metres * ParseCsvNumber(reader, fields[*column_depth], "depth");
@@ -112,9 +82,9 @@ IndentationCurves ReadIndentationCurvesCsv(const std::string& path, LengthUnit u
     }
     IndentationCurve& curve = curves.curves[found->second];
     if ((curve.point - point).cwiseAbs().maxCoeff() > kSameCoordinateM) {
-      reader.Fail("sample " + Quote(name) + " is at (" + fields[*column_x] + ", " +
-                      fields[*column_y] + ", " + fields[*column_z] +
-                      ") here but elsewhere on line " + std::to_string(curve.first_line),
+      reader.Fail("sample " + Quote(name) + " is at (" + fields[column_x] + ", " +
+                      fields[column_y] + ", " + fields[column_z] + ") here but elsewhere on line " +
+                      std::to_string(curve.first_line),
                   "give each point its own name, and the same coordinates on all its rows");
     }
     if (column_depth && std::abs(curve.measured_depth - depth) > kSameCoordinateM) {
@@ -125,7 +95,7 @@ IndentationCurves ReadIndentationCurvesCsv(const std::string& path, LengthUnit u
     curve.indentation.push_back(indentation);
     curve.force.push_back(force);
   }
-  if (!header_read) {
+  if (!header) {
     throw InputError(path, "", "the file holds no header and no readings",
                      std::string("write a header row ") + kColumns + ", then one row per reading");
   }

@@ -1,5 +1,6 @@
 #include "ergo/ergonomics/csv_row.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -52,6 +53,55 @@ double ParseCsvNumber(const TextReader& reader, const std::string& field,
   if (!std::isfinite(value))
     reader.Fail(column + " " + Quote(field) + " is not finite", "give a finite number");
   return value;
+}
+
+bool NextCsvRow(TextReader& reader, std::vector<std::string>* fields) {
+  std::string_view line;
+  while (reader.NextLine(&line)) {
+    reader.RequireRecordLength(line);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    if (line.empty() || line.front() == '#' ||
+        line.find_first_not_of(" \t\r,;") == std::string_view::npos)
+      continue;
+    *fields = SplitCsvRow(line);
+    return true;
+  }
+  return false;
+}
+
+CsvHeader::CsvHeader(const TextReader& reader, const std::vector<std::string>& fields,
+                     const std::vector<std::string>& known, std::string usage)
+    : usage_(std::move(usage)) {
+  for (const std::string& field : fields) {
+    const std::string name = ToLower(field);
+    const bool is_known = std::find(known.begin(), known.end(), name) != known.end();
+    if (is_known && std::find(names_.begin(), names_.end(), name) != names_.end())
+      reader.Fail("the column " + Quote(field) + " is named twice", "name each column once");
+    if (!is_known) ignored_.push_back(field);
+    names_.push_back(is_known ? name : "");
+  }
+}
+
+std::optional<int> CsvHeader::Find(const std::string& name) const {
+  const auto found = std::find(names_.begin(), names_.end(), name);
+  if (found == names_.end()) return std::nullopt;
+  return static_cast<int>(found - names_.begin());
+}
+
+int CsvHeader::Require(const TextReader& reader, const std::string& name) const {
+  const std::optional<int> column = Find(name);
+  if (!column)
+    reader.Fail("the header has no column '" + name + "'",
+                "the first row must name the columns " + usage_);
+  return *column;
+}
+
+void CsvHeader::CheckRow(const TextReader& reader, const std::vector<std::string>& fields) const {
+  if (fields.size() != names_.size()) {
+    reader.Fail("has " + std::to_string(fields.size()) + " fields, the header " +
+                    std::to_string(names_.size()),
+                "give every row the header's columns (" + usage_ + ")");
+  }
 }
 
 }  // namespace ergo
