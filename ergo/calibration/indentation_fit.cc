@@ -157,6 +157,10 @@ IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
     fit.message = "has no reading beyond indentation 0: the tip never pressed in";
     return fit;
   }
+  if (options.fit_depth && !(options.max_depth > 1.02 * readings.max_indentation)) {
+    fit.message = "is indented as deep as the largest depth the fit may reach (max_depth)";
+    return fit;
+  }
   if (!options.fit_depth && !options.fit_contact_point &&
       !(options.depth > readings.max_indentation)) {
     fit.message = "is indented deeper than the layer's depth";
@@ -208,26 +212,17 @@ IndentationFit FitIndentationCurve(const std::vector<double>& indentation,
   fit.max_strain = std::isinf(fit.depth) ? 0 : deepest / fit.depth;
   fit.rms_residual = std::sqrt(residual.squaredNorm() / fit.readings);
   fit.relative_rms = fit.rms_residual / readings.max_force;
-  const int dof = fit.readings - parameters;
-  if (dof <= 0) {
-    fit.youngs_modulus_stderr = fit.depth_stderr = fit.contact_offset_stderr =
-        std::numeric_limits<double>::quiet_NaN();
-  } else {
-    const double variance = residual.squaredNorm() / dof;
-    const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
-    const Eigen::MatrixXd covariance =
-        variance * normal.completeOrthogonalDecomposition().pseudoInverse();
-    int column = 0;
-    fit.youngs_modulus_stderr =
-        fit.youngs_modulus * std::sqrt(std::max(0.0, covariance(column, column)));
-    ++column;
-    if (options.fit_depth) {
-      fit.depth_stderr = fit.depth * std::sqrt(std::max(0.0, covariance(column, column)));
-      ++column;
-    }
-    if (options.fit_contact_point)
-      fit.contact_offset_stderr = std::sqrt(std::max(0.0, covariance(column, column)));
-  }
+  // At least two readings per unknown (checked above) leave n − p ≥ 1.
+  const double variance = residual.squaredNorm() / (fit.readings - parameters);
+  const Eigen::MatrixXd covariance =
+      variance *
+      (jacobian.transpose() * jacobian).completeOrthogonalDecomposition().pseudoInverse();
+  auto standard_error = [&](int column) {
+    return std::sqrt(std::max(0.0, covariance(column, column)));
+  };
+  fit.youngs_modulus_stderr = fit.youngs_modulus * standard_error(0);
+  if (options.fit_depth) fit.depth_stderr = fit.depth * standard_error(1);
+  if (options.fit_contact_point) fit.contact_offset_stderr = standard_error(parameters - 1);
   if (options.fit_depth) {
     fit.depth_at_bound = fit.depth > 0.999 * options.max_depth;
     if (fit.depth_at_bound) {
@@ -268,7 +263,7 @@ std::string DescribeFit(const IndentationFit& fit) {
   } else {
     std::snprintf(text, sizeof(text), ", h = %.4g", 1e3 * fit.depth);
     line += text;
-    if (fit.depth_stderr > 0 || std::isnan(fit.depth_stderr)) {
+    if (fit.depth_stderr > 0) {
       std::snprintf(text, sizeof(text), " ± %.2g", 1e3 * fit.depth_stderr);
       line += text;
     }

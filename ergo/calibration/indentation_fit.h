@@ -38,7 +38,7 @@ struct IndentationFit {
   std::string message;               // why not, or what to beware of ("" when nothing)
   double youngs_modulus = 0;         // Pa
   double depth = 0;                  // m (given or fitted; ∞ for the half-space)
-  double youngs_modulus_stderr = 0;  // Pa; NaN when the readings leave no degree of freedom
+  double youngs_modulus_stderr = 0;  // Pa
   double depth_stderr = 0;           // m; 0 when given
   bool depth_at_bound = false;       // the fitted depth ended on max_depth: not determined
   double contact_offset = 0;         // m: c, the logged travel at first contact (0 if not fitted)

@@ -145,6 +145,12 @@ TEST(Calibration, CurvesThatCannotDetermineTheUnknownsSaySo) {
   EXPECT_NE(fit.message.find("not determined"), std::string::npos) << fit.message;
   // E is still close: at the 0.2 m bound χ ≤ 0.04 leaves the law ~3.5 % above Hertz's.
   EXPECT_NEAR(fit.youngs_modulus, kYoungs, 0.05 * kYoungs);
+  // A bound on the fitted depth shallower than the indentation.
+  options.max_depth = 0.004;
+  fit = FitIndentationCurve(short_curve.indentation, short_curve.force, options);
+  EXPECT_FALSE(fit.converged);
+  EXPECT_NE(fit.message.find("max_depth"), std::string::npos) << fit.message;
+  options.max_depth = 0.2;
   // Pressed deeper than the layer it is said to have.
   options.fit_depth = false;
   options.depth = 0.003;
