@@ -35,7 +35,8 @@ void CheckFlagfile(const std::string& path, std::set<std::string>* seen, int dep
 void CheckFlag(const std::string& argument, const std::string& where, std::set<std::string>* seen,
                int depth) {
   const std::string name = FlagName(argument);
-  if (name.empty()) throw InputError(where, "", "'" + argument + "' is not a flag", "write --name=value");
+  if (name.empty())
+    throw InputError(where, "", "'" + argument + "' is not a flag", "write --name=value");
   if (!KnownFlag(name)) {
     throw InputError("--" + name, "",
                      "is not a flag of this tool" + (where.empty() ? "" : " (in " + where + ")"),
@@ -55,12 +56,14 @@ void CheckFlagfile(const std::string& path, std::set<std::string>* seen, int dep
   if (depth > 8) throw InputError(path, "", "flagfiles nest deeper than 8", "remove the cycle");
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0)
-    throw InputError("--flagfile", "", "'" + path + "' does not exist", "give the scenario file, e.g. data/shoe.flags");
+    throw InputError("--flagfile", "", "'" + path + "' does not exist",
+                     "give the scenario file, e.g. data/shoe.flags");
   if (!S_ISREG(info.st_mode))
     throw InputError("--flagfile", "", "'" + path + "' is not a regular file",
                      "give a flagfile such as data/shoe.flags, not a directory or device");
   std::ifstream in(path);
-  if (!in) throw InputError("--flagfile", "", "'" + path + "' cannot be read", "check its permissions");
+  if (!in)
+    throw InputError("--flagfile", "", "'" + path + "' cannot be read", "check its permissions");
   if (!seen->insert(path).second) return;
   std::string line;
   int number = 0;
@@ -107,6 +110,11 @@ void CheckCommandLine(int argc, char** argv, int positional) {
                        "flags are written --name=value (see --help)");
     }
   }
+}
+
+void RequireFlag(bool condition, const std::string& flag, const std::string& what,
+                 const std::string& fix) {
+  if (!condition) throw InputError("--" + flag, "", what, fix);
 }
 
 void RequireInRange(const char* flag, double value, double low, double high,

@@ -14,6 +14,10 @@ namespace ergo {
 // `positional` = how many positional arguments the tool takes (ergo_mesh: a verb and files).
 void CheckCommandLine(int argc, char** argv, int positional = 0);
 
+// When `condition` fails: InputError naming --flag, with `what` is wrong and the `fix`.
+void RequireFlag(bool condition, const std::string& flag, const std::string& what,
+                 const std::string& fix);
+
 // value must be finite and lie in [low, high]; else InputError naming --flag with `fix`.
 void RequireInRange(const char* flag, double value, double low, double high,
                     const std::string& fix);

@@ -64,11 +64,6 @@ DEFINE_bool(plot, true,
 namespace ergo {
 namespace {
 
-void Require(bool condition, const std::string& flag, const std::string& what,
-             const std::string& fix) {
-  if (!condition) throw InputError("--" + flag, "", what, fix);
-}
-
 struct PointResult {
   const IndentationCurve* curve = nullptr;
   IndentationFit fit;
@@ -214,25 +209,27 @@ std::string MarkdownReport(const std::vector<PointResult>& results, const std::s
 }
 
 int Run() {
-  Require(!FLAGS_indentation.empty(), "indentation", "is required",
-          "give the curves' CSV, e.g. --indentation=curves.csv");
-  Require(!FLAGS_out.empty(), "out", "is required", "name the output directory, e.g. --out=calib");
+  RequireFlag(!FLAGS_indentation.empty(), "indentation", "is required",
+              "give the curves' CSV, e.g. --indentation=curves.csv");
+  RequireFlag(!FLAGS_out.empty(), "out", "is required",
+              "name the output directory, e.g. --out=calib");
   LengthUnit unit = LengthUnit::kMetre;
-  Require(ParseLengthUnit(FLAGS_unit, &unit), "unit", "'" + FLAGS_unit + "' is unknown",
-          "use m or mm");
+  RequireFlag(ParseLengthUnit(FLAGS_unit, &unit), "unit", "'" + FLAGS_unit + "' is unknown",
+              "use m or mm");
   RequireInRange("indenter_radius", FLAGS_indenter_radius, 1e-5, 0.5,
                  "the tip's radius in metres, e.g. 0.005 (required)");
-  Require(FLAGS_poisson_ratio > -1 && FLAGS_poisson_ratio <= 0.5, "poisson_ratio",
-          std::to_string(FLAGS_poisson_ratio) + " is outside (-1, 0.5]",
-          "tissue is nearly incompressible: 0.45-0.5");
-  Require(FLAGS_layer_base == "bonded" || FLAGS_layer_base == "sliding", "layer_base",
-          "'" + FLAGS_layer_base + "' is unknown", "use bonded or sliding");
+  RequireFlag(FLAGS_poisson_ratio > -1 && FLAGS_poisson_ratio <= 0.5, "poisson_ratio",
+              std::to_string(FLAGS_poisson_ratio) + " is outside (-1, 0.5]",
+              "tissue is nearly incompressible: 0.45-0.5");
+  RequireFlag(FLAGS_layer_base == "bonded" || FLAGS_layer_base == "sliding", "layer_base",
+              "'" + FLAGS_layer_base + "' is unknown", "use bonded or sliding");
   RequireInRange("depth", FLAGS_depth, 0, 1, "metres, e.g. 0.017; 0 = not given");
   RequireInRange("max_depth", FLAGS_max_depth, 1e-4, 10, "metres, e.g. 0.1");
-  Require(!(FLAGS_half_space && FLAGS_fit_depth), "half_space", "and --fit_depth are both given",
-          "a half-space has no depth to fit: give one of them");
-  Require(!(FLAGS_half_space && FLAGS_depth > 0), "half_space", "and --depth are both given",
-          "give one of them");
+  RequireFlag(!(FLAGS_half_space && FLAGS_fit_depth), "half_space",
+              "and --fit_depth are both given",
+              "a half-space has no depth to fit: give one of them");
+  RequireFlag(!(FLAGS_half_space && FLAGS_depth > 0), "half_space", "and --depth are both given",
+              "give one of them");
   OutputDirectory output(FLAGS_out, "out");  // checks that it can be written, before any work
 
   const IndentationCurves curves = ReadIndentationCurvesCsv(FLAGS_indentation, unit);

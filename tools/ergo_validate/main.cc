@@ -115,11 +115,6 @@ namespace {
 
 constexpr double kDegree = M_PI / 180;
 
-void Require(bool condition, const std::string& flag, const std::string& what,
-             const std::string& fix) {
-  if (!condition) throw InputError("--" + flag, "", what, fix);
-}
-
 Eigen::Vector2d ParseShift(const std::string& text) {
   const std::vector<std::string> items = SplitList(text, ',');
   Eigen::Vector2d shift;
@@ -127,8 +122,8 @@ Eigen::Vector2d ParseShift(const std::string& text) {
   for (size_t k = 0; ok && k < 2; ++k)
     ok = ParseDouble(items[k], &shift[static_cast<Eigen::Index>(k)]) &&
          std::isfinite(shift[static_cast<Eigen::Index>(k)]);
-  Require(ok, "synthetic_shift_mm", "'" + text + "' is not two finite numbers",
-          "write DX,DZ in mm, e.g. 12,-7");
+  RequireFlag(ok, "synthetic_shift_mm", "'" + text + "' is not two finite numbers",
+              "write DX,DZ in mm, e.g. 12,-7");
   return 1e-3 * shift;
 }
 
@@ -147,17 +142,18 @@ RunFlags ValidateRunFlags() {
   const bool synthetic =
       !FLAGS_write_synthetic_plate.empty() || !FLAGS_write_synthetic_sensors.empty();
   if (synthetic) {
-    Require(
+    RequireFlag(
         FLAGS_sensors.empty() && FLAGS_plate.empty(),
         FLAGS_write_synthetic_plate.empty() ? "write_synthetic_sensors" : "write_synthetic_plate",
         "writes a synthetic measurement and compares nothing, but --sensors or --plate is given",
         "run once to write the file, then again with --sensors or --plate to compare");
   } else {
-    Require(FLAGS_sensors.empty() != FLAGS_plate.empty(), "sensors",
-            FLAGS_sensors.empty() ? "and --plate are both missing" : "and --plate are both given",
-            "give the measurement to compare: --sensors=readings.csv or --plate=export.csv");
-    Require(!FLAGS_out.empty(), "out", "is required",
-            "name the output directory, e.g. --out=validation");
+    RequireFlag(
+        FLAGS_sensors.empty() != FLAGS_plate.empty(), "sensors",
+        FLAGS_sensors.empty() ? "and --plate are both missing" : "and --plate are both given",
+        "give the measurement to compare: --sensors=readings.csv or --plate=export.csv");
+    RequireFlag(!FLAGS_out.empty(), "out", "is required",
+                "name the output directory, e.g. --out=validation");
   }
   std::string error;
   if (!ParseSampleTrim(FLAGS_trim, &flags.trim, &error)) throw InputError("--trim", "", error, "");
@@ -165,21 +161,21 @@ RunFlags ValidateRunFlags() {
   RequireInRange("plate_pitch", FLAGS_plate_pitch, 0, 1000,
                  "millimetres, e.g. 5.08; 0 = the file's");
   double pascals = 0;
-  Require(FLAGS_plate_unit.empty() || PascalsPerUnit(FLAGS_plate_unit, &pascals), "plate_unit",
-          "'" + FLAGS_plate_unit + "' is not a pressure unit ergo reads",
-          "use one of " + PressureUnitNames());
+  RequireFlag(FLAGS_plate_unit.empty() || PascalsPerUnit(FLAGS_plate_unit, &pascals), "plate_unit",
+              "'" + FLAGS_plate_unit + "' is not a pressure unit ergo reads",
+              "use one of " + PressureUnitNames());
   // auto: a plate's export lies in the plate's frame and must be placed; sensors are located
   // on the support itself, and an interpolated map's soft outline is a poor handle for a fit
   // (on the quick shoe's synthetic sensors a rigid fit moved it 0.9° and 1.5 mm off and
   // lowered Pearson from 0.976 to 0.960).
   const std::string align =
       FLAGS_align != "auto" ? FLAGS_align : (FLAGS_plate.empty() ? "none" : "rigid");
-  Require(ParseAlignmentMode(align, &flags.align), "align", "'" + FLAGS_align + "' is unknown",
-          "use auto, rigid, translation or none");
-  Require(ParseAlignmentScore(FLAGS_align_by, &flags.align_by), "align_by",
-          "'" + FLAGS_align_by + "' is unknown", "use footprint or pressure");
-  Require(ParseSimulatedSide(FLAGS_simulated_side, &flags.side), "simulated_side",
-          "'" + FLAGS_simulated_side + "' is unknown", "use skin or support");
+  RequireFlag(ParseAlignmentMode(align, &flags.align), "align", "'" + FLAGS_align + "' is unknown",
+              "use auto, rigid, translation or none");
+  RequireFlag(ParseAlignmentScore(FLAGS_align_by, &flags.align_by), "align_by",
+              "'" + FLAGS_align_by + "' is unknown", "use footprint or pressure");
+  RequireFlag(ParseSimulatedSide(FLAGS_simulated_side, &flags.side), "simulated_side",
+              "'" + FLAGS_simulated_side + "' is unknown", "use skin or support");
   const std::string regions = FLAGS_regions != "auto" ? FLAGS_regions
                               : FLAGS_scenario == "shoe"
                                   ? "rearfoot:0.3333,midfoot:0.6667,forefoot:1"
@@ -188,8 +184,8 @@ RunFlags ValidateRunFlags() {
     throw InputError("--regions", "", error, "");
   const std::map<std::string, Eigen::Vector2d> axes = {
       {"+x", {1, 0}}, {"-x", {-1, 0}}, {"+z", {0, 1}}, {"-z", {0, -1}}};
-  Require(axes.count(FLAGS_region_axis) == 1, "region_axis",
-          "'" + FLAGS_region_axis + "' is unknown", "use +x, -x, +z or -z");
+  RequireFlag(axes.count(FLAGS_region_axis) == 1, "region_axis",
+              "'" + FLAGS_region_axis + "' is unknown", "use +x, -x, +z or -z");
   flags.region_axis = axes.at(FLAGS_region_axis);
   RequireInRange("footprint_fraction", FLAGS_footprint_fraction, 1e-4, 0.5,
                  "a fraction of the simulated peak, e.g. 0.02");
