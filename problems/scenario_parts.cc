@@ -356,6 +356,8 @@ void FinishScenario(const std::string& description, const std::string& support_s
   space << "; skin edge near the design " << r.skin_edge * 1e3 << " mm";
   if (design.parameterization == DesignParameterization::kFiltered)
     space << ", design filter radius " << design.filter_radius * 1e3 << " mm";
+  if (design.parameterization == DesignParameterization::kSpline)
+    space << ", design spline knot spacing " << design.filter_radius * 1e3 << " mm";
   if (design.pressure.smoothing_radius > 0) {
     space << ", pressure smoothing radius " << design.pressure.smoothing_radius * 1e3 << " mm";
   } else {

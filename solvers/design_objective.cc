@@ -51,6 +51,10 @@ std::string DesignObjective::Describe() const {
       space << "filtered normal displacements (radius " << 1e3 * p.filter_radius() << " mm"
             << (p.l2_metric() ? ", L² metric)" : ")");
       break;
+    case DesignParameterization::kSpline:
+      space << "cubic B-spline lattice (knot spacing " << 1e3 * p.filter_radius() << " mm, "
+            << p.size() << " controls)";
+      break;
   }
   std::ostringstream gamma;
   gamma << problem_->options().gamma;

@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include <glog/logging.h>
+#include <Eigen/SparseCholesky>
 
+#include "ergo/design/spline_lattice.h"
 #include "ergo/mesh/cotangent_stiffness.h"
 #include "ergo/mesh/surface_geometry.h"
 
@@ -27,6 +29,22 @@ SupportParameterization::SupportParameterization(const TriMesh& initial, std::ve
     filter_radius_ = filter_radius;
     BuildFilter(initial);
   }
+  if (kind_ == DesignParameterization::kSpline) {
+    CHECK(filter_radius > 0 && std::isfinite(filter_radius))
+        << "the spline design space needs a knot spacing > 0 m, got " << filter_radius;
+    filter_radius_ = filter_radius;
+    BuildSpline();
+  }
+}
+
+void SupportParameterization::BuildSpline() {
+  Eigen::MatrixXd points(active_.size(), 3);
+  for (Eigen::Index i = 0; i < active_.size(); ++i) points.row(i) = initial_.row(active_[i]);
+  // The lattice hangs from the whole support's lowest corner, not the designed vertices':
+  // the same on every mesh of the support (spline_lattice.h).
+  const Eigen::Vector3d origin =
+      initial_.colwise().minCoeff().transpose() - Eigen::Vector3d::Constant(0.5 * filter_radius_);
+  spline_basis_ = SplineLattice(points, filter_radius_, origin).basis();
 }
 
 void SupportParameterization::BuildFilter(const TriMesh& initial) {
@@ -81,6 +99,7 @@ Eigen::VectorXd SupportParameterization::FilterTransposed(const Eigen::VectorXd&
 }
 
 int SupportParameterization::size() const {
+  if (kind_ == DesignParameterization::kSpline) return static_cast<int>(spline_basis_.cols());
   return static_cast<int>(active_.size()) * (kind_ == DesignParameterization::kPositions ? 3 : 1);
 }
 
@@ -100,7 +119,7 @@ Vertices SupportParameterization::Positions(const Eigen::VectorXd& x) const {
       positions.row(active_[i]) = x.segment<3>(3 * i).transpose();
     return positions;
   }
-  const Eigen::VectorXd along_normal = kind_ == DesignParameterization::kFiltered ? Filter(x) : x;
+  const Eigen::VectorXd along_normal = AlongNormal(x);
   for (Eigen::Index i = 0; i < active_.size(); ++i) {
     const int v = active_[i];
     positions.row(v) = initial_.row(v) + along_normal[i] * normals_.row(v);
@@ -110,7 +129,9 @@ Vertices SupportParameterization::Positions(const Eigen::VectorXd& x) const {
 
 Eigen::VectorXd SupportParameterization::PullBack(const Vertices& position_gradient) const {
   CHECK_EQ(position_gradient.rows(), initial_.rows());
-  Eigen::VectorXd gradient(size());
+  // Per active vertex (3 numbers each for kPositions), then through the filter or spline.
+  const Eigen::Index per_vertex = kind_ == DesignParameterization::kPositions ? 3 : 1;
+  Eigen::VectorXd gradient(per_vertex * active_.size());
   for (Eigen::Index i = 0; i < active_.size(); ++i) {
     const int v = active_[i];
     if (kind_ == DesignParameterization::kPositions) {
@@ -119,14 +140,15 @@ Eigen::VectorXd SupportParameterization::PullBack(const Vertices& position_gradi
       gradient[i] = position_gradient.row(v).dot(normals_.row(v));
     }
   }
+  if (kind_ == DesignParameterization::kSpline) return spline_basis_.transpose() * gradient;
   return kind_ == DesignParameterization::kFiltered ? FilterTransposed(gradient) : gradient;
 }
 
 Eigen::VectorXd SupportParameterization::VertexMoves(const Eigen::VectorXd& dx) const {
   CHECK_EQ(dx.size(), size());
   Eigen::VectorXd moves(active_.size());
-  if (kind_ == DesignParameterization::kFiltered) {
-    const Eigen::VectorXd displacement = Filter(dx);
+  if (kind_ == DesignParameterization::kFiltered || kind_ == DesignParameterization::kSpline) {
+    const Eigen::VectorXd displacement = AlongNormal(dx);
     for (Eigen::Index i = 0; i < active_.size(); ++i)
       moves[i] = std::abs(displacement[i]) * normals_.row(active_[i]).norm();
     return moves;
@@ -139,10 +161,23 @@ Eigen::VectorXd SupportParameterization::VertexMoves(const Eigen::VectorXd& dx) 
 
 double SupportParameterization::BoxHalfWidthForMove(double move) const {
   if (kind_ == DesignParameterization::kPositions) return move / std::sqrt(3.0);
+  // B ≥ 0 with rows summing to 1: |Bc| ≤ max|c|.
+  if (kind_ == DesignParameterization::kSpline) return move;
   // F averages (F·1 = 1, F ≥ 0 where A is an M-matrix, as on the scenes' grid tops), so
   // |Fθ| ≤ max|θ|: |θᵢ| ≤ move suffices.
   if (!l2_metric_ || metric_weight_.size() == 0) return move;
   return move * metric_weight_.minCoeff();
+}
+
+Eigen::VectorXd SupportParameterization::AlongNormal(const Eigen::VectorXd& x) const {
+  switch (kind_) {
+    case DesignParameterization::kFiltered:
+      return Filter(x);
+    case DesignParameterization::kSpline:
+      return spline_basis_ * x;
+    default:
+      return x;
+  }
 }
 
 Eigen::VectorXd SupportParameterization::NormalDisplacements(const Vertices& positions) const {
@@ -169,6 +204,19 @@ Eigen::VectorXd SupportParameterization::DesignFor(const Vertices& positions) co
       return (filter_matrix_ * NormalDisplacements(positions))
           .cwiseQuotient(filter_mass_)
           .cwiseProduct(metric_weight_);
+    case DesignParameterization::kSpline: {
+      if (size() == 0) return Eigen::VectorXd();
+      Eigen::SparseMatrix<double> normal = spline_basis_.transpose() * spline_basis_;
+      // ε: 1e-9 of the mean diagonal makes the redundant layers' normal matrix definite and
+      // picks the minimum-norm controls among them; it also damps the fit along directions
+      // the lattice reaches only through corner weights ~(1/48)³ (4e-6 of a move on the test
+      // block), which matters for a start design, not for a gradient.
+      const double epsilon = 1e-9 * normal.diagonal().mean();
+      for (Eigen::Index c = 0; c < normal.rows(); ++c) normal.coeffRef(c, c) += epsilon;
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+      CHECK(solver.info() == Eigen::Success) << "the spline's normal equations";
+      return solver.solve(spline_basis_.transpose() * NormalDisplacements(positions));
+    }
   }
   LOG(FATAL) << "unknown parameterization";
   return {};

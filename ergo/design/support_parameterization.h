@@ -29,6 +29,13 @@
 // ‖∂φ/∂θ̃‖ no longer depend on the mesh. A vertex-move cap m becomes the box |θ̃ᵢ| ≤ m·min W
 // (BoxHalfWidthForMove), the same fraction of the cap on every mesh.
 //
+// The spline space (kSpline; ergo/design/spline_lattice.h): x = x₀ + N·B·c, c the control
+// values of a cubic B-spline lattice in space of knot spacing r (the `filter_radius`), B its
+// weights at the designed vertices. The design variables are the same on every mesh of the
+// support: a 10 and a 5 mm sole sample one function of the same controls, and the optimiser's
+// Euclidean inner product on c is the same on both. B ≥ 0 with rows summing to 1, so
+// |d| ≤ max|c| (the box for a move cap is the cap itself). Pull-back: Bᵀ, exact.
+//
 // Threads: copies share nothing (each owns its CHOLMOD factor and workspace), so copies may
 // be used from different threads; one object must not be used from two threads at once
 // (kFiltered's const methods use the factor's solve workspace).
@@ -44,13 +51,14 @@
 
 namespace ergo {
 
-enum class DesignParameterization { kPositions, kNormalDisplacement, kFiltered };
+enum class DesignParameterization { kPositions, kNormalDisplacement, kFiltered, kSpline };
 
 class SupportParameterization {
  public:
   // `active` flags support vertices that may move (empty = all). Normals are the
   // area-weighted vertex normals of `initial`. `filter_radius` r (m, > 0) is required by
-  // kFiltered and ignored by the other kinds, as is `l2_metric` (see above).
+  // kFiltered and kSpline (its knot spacing) and ignored by the other kinds; `l2_metric`
+  // applies to kFiltered only (see above).
   SupportParameterization(const TriMesh& initial, std::vector<bool> active,
                           DesignParameterization kind, double filter_radius = 0,
                           bool l2_metric = false);
@@ -58,7 +66,7 @@ class SupportParameterization {
   DesignParameterization kind() const { return kind_; }
   int size() const;  // number of design variables
   const Eigen::VectorXi& active_vertices() const { return active_; }
-  // r, m, for kFiltered; 0 for the other kinds (they have no filter).
+  // r, m, for kFiltered and kSpline; 0 for the other kinds (they have no filter).
   double filter_radius() const { return filter_radius_; }
   bool l2_metric() const { return l2_metric_; }
   // The half-width of the box on each design variable that keeps every vertex within `move`
@@ -77,14 +85,20 @@ class SupportParameterization {
   // The design whose support is closest to `positions` (#V x 3; only active rows are read):
   // their active rows for kPositions; the displacement from x₀ projected on the normals for
   // kNormalDisplacement; for kFiltered that displacement d mapped back through the filter,
-  // θ = F⁻¹ d = M⁻¹ A d (exact: F is invertible). DesignFor(Positions(x)) = x.
+  // θ = F⁻¹ d = M⁻¹ A d (exact: F is invertible). DesignFor(Positions(x)) = x. For kSpline
+  // the least-squares fit of the displacement, min ‖Bc − d‖² + ε‖c‖² with ε tiny (the
+  // minimum-norm controls: a flat region is reached by several layers of the lattice), so
+  // Positions(DesignFor(p)) = p only for p in the spline space.
   Eigen::VectorXd DesignFor(const Vertices& positions) const;
 
  private:
   void BuildFilter(const TriMesh& initial);
+  void BuildSpline();
   // d = F θ and Fᵀ g (both #active); with the L² metric θ = W⁻¹ θ̃ inside.
   Eigen::VectorXd Filter(const Eigen::VectorXd& theta) const;
   Eigen::VectorXd FilterTransposed(const Eigen::VectorXd& g) const;
+  // Per active vertex its displacement along the normal for design x (not kPositions).
+  Eigen::VectorXd AlongNormal(const Eigen::VectorXd& x) const;
   // Per active vertex the displacement along its normal of the support at `positions`.
   Eigen::VectorXd NormalDisplacements(const Vertices& positions) const;
 
@@ -100,6 +114,8 @@ class SupportParameterization {
   Eigen::VectorXd metric_weight_;  // W (ones without the L² metric)
   SparseMatrix filter_matrix_;
   SparseCholesky filter_cholesky_;
+  // kSpline: B, #active x controls.
+  Eigen::SparseMatrix<double> spline_basis_;
 };
 
 }  // namespace ergo

@@ -1,6 +1,6 @@
 // The adjoint gradient on the second scene of the issue: a soft ball (a layer meshed by the
 // body builder) resting on a plate with a Gaussian bump, core translating vertically only,
-// for the three design parameterisations (the filtered one checks the filter's pull-back
+// for the four design parameterisations (the filtered and spline ones check their pull-backs
 // inside the whole adjoint chain). The pit scene (design_gradient_test.cc) covers free
 // core rotation and every Voronoi region type; here the support is smooth and fine and the
 // skin is a Mesh_3 surface.
@@ -26,7 +26,8 @@ TEST_P(DesignGradientBallOnBump, AdjointGradientMatchesFiniteDifferences) {
   options.contact_stiffness = 1e7;  // κ, Pa/m
   Scenario scenario = MakeBumpScenario(options);
   scenario.design.parameterization = GetParam();
-  scenario.design.filter_radius = 0.025;  // m, about two skin edges; used by kFiltered only
+  // m, about two skin edges: the filter's radius, the spline's knot spacing
+  scenario.design.filter_radius = 0.025;
   scenario.design.equilibrium.relative_tolerance = 1e-11;
   // Design only the plate's top vertices within 3 cm of the bump (keeps the component-wise
   // check affordable).
@@ -94,7 +95,8 @@ TEST_P(DesignGradientBallOnBump, AdjointGradientMatchesFiniteDifferences) {
 INSTANTIATE_TEST_SUITE_P(Parameterizations, DesignGradientBallOnBump,
                          ::testing::Values(DesignParameterization::kPositions,
                                            DesignParameterization::kNormalDisplacement,
-                                           DesignParameterization::kFiltered),
+                                           DesignParameterization::kFiltered,
+                                           DesignParameterization::kSpline),
                          [](const auto& info) {
                            switch (info.param) {
                              case DesignParameterization::kPositions:
@@ -103,6 +105,8 @@ INSTANTIATE_TEST_SUITE_P(Parameterizations, DesignGradientBallOnBump,
                                return std::string("normal");
                              case DesignParameterization::kFiltered:
                                return std::string("filtered");
+                             case DesignParameterization::kSpline:
+                               return std::string("spline");
                            }
                            return std::string("unknown");
                          });

@@ -65,6 +65,8 @@ std::string Name(DesignParameterization kind) {
       return "normal";
     case DesignParameterization::kFiltered:
       return "filtered";
+    case DesignParameterization::kSpline:
+      return "spline";  // tests/design/spline_design_space_test.cc
   }
   return "?";
 }

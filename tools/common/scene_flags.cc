@@ -37,11 +37,14 @@ DEFINE_string(lock, "",
 DEFINE_string(parameterization, "filtered",
               "design variables: filtered (one per designed vertex, moving the surface along its "
               "normals through a Helmholtz filter of radius --filter_radius: mesh-independent), "
-              "normal (the raw displacement along the initial normal per designed vertex) or "
+              "spline (the control values of a cubic B-spline lattice in space of knot spacing "
+              "--filter_radius, sampled at the designed vertices: the same variables on every "
+              "mesh of the support), normal (the raw displacement along the initial normal per "
+              "designed vertex) or "
               "positions (three raw coordinates per designed vertex)");
 DEFINE_string(filter_radius, "auto",
-              "radius r of the design filter, m, or auto (2.5 × the skin's mean edge near the "
-              "designed region)");
+              "radius r of the design filter (the knot spacing of --parameterization=spline), m, "
+              "or auto (2.5 × the skin's mean edge near the designed region)");
 DEFINE_string(pressure_smoothing_radius, "scene",
               "radius of the Helmholtz smoothing of the pressures before scoring, m; scene (the "
               "scene's physical radius, the same at every resolution: shoe 12 mm, chair 44 mm, "
@@ -138,13 +141,15 @@ double LengthFlag(const std::string& text, const char* flag, const char* word, d
 DesignSpaceOptions DesignSpaceFlags(DesignSpaceOptions space) {
   if (FLAGS_parameterization == "filtered") {
     space.parameterization = DesignParameterization::kFiltered;
+  } else if (FLAGS_parameterization == "spline") {
+    space.parameterization = DesignParameterization::kSpline;
   } else if (FLAGS_parameterization == "normal") {
     space.parameterization = DesignParameterization::kNormalDisplacement;
   } else if (FLAGS_parameterization == "positions") {
     space.parameterization = DesignParameterization::kPositions;
   } else {
     throw InputError("--parameterization", "", "'" + FLAGS_parameterization + "' is unknown",
-                     "use filtered, normal or positions");
+                     "use filtered, spline, normal or positions");
   }
   space.filter_radius = LengthFlag(FLAGS_filter_radius, "filter_radius", "auto", 0);
   if (FLAGS_pressure_smoothing_radius == "umbrella") {

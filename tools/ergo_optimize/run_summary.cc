@@ -154,7 +154,8 @@ Json SummaryJson(const RunSummary& s) {
   const DesignOptions& design = scenario.design;
   j["gamma"] = s.gamma;
   j["contact_stiffness_Pa_per_m"] = design.equilibrium.contact_stiffness;
-  j["filter_radius_m"] = design.parameterization == DesignParameterization::kFiltered
+  j["filter_radius_m"] = design.parameterization == DesignParameterization::kFiltered ||
+                                 design.parameterization == DesignParameterization::kSpline
                              ? Json(design.filter_radius)
                              : Json();
   j["pressure_smoothing_radius_m"] = design.pressure.smoothing_radius;
@@ -273,6 +274,9 @@ std::string SummaryMarkdown(const RunSummary& s) {
      << " Pa/m; design filter radius "
      << (design.parameterization == DesignParameterization::kFiltered
              ? Format("%.1f", design.filter_radius * 1e3) + " mm"
+         : design.parameterization == DesignParameterization::kSpline
+             ? "a cubic B-spline lattice of knot spacing " +
+                   Format("%.1f", design.filter_radius * 1e3) + " mm"
              : std::string("none (raw vertices)"))
      << "; pressure smoothing "
      << (design.pressure.smoothing_radius > 0
