@@ -18,6 +18,7 @@
 #include "ergo/design/support_parameterization.h"
 #include "ergo/mesh/surface_geometry.h"
 #include "problems/profile_block.h"
+#include "tests/support/design_block.h"
 #include "tests/support/finite_difference.h"
 #include "tests/support/flat_grid.h"
 
@@ -86,14 +87,7 @@ struct Block {
 };
 
 Block MakeBlock() {
-  ProfileBlock shape;
-  shape.width = 0.08;
-  shape.back_z = -0.05;
-  shape.front_z = 0.05;
-  shape.bottom_y = -0.04;
-  shape.front_radius = 0.02;
-  shape.top_spacing = 0.01;
-  shape.wall_spacing = 0.02;
+  const ProfileBlock shape = testing::SmallDesignBlock();
   Block block{MakeProfileBlock(shape), {}};
   for (Eigen::Index v = 0; v < block.mesh.vertices.rows(); ++v)
     block.active.push_back(OnProfileBlockTop(shape, block.mesh.vertices.row(v)));

@@ -19,6 +19,7 @@
 
 #include "ergo/mesh/surface_geometry.h"
 #include "problems/profile_block.h"
+#include "tests/support/design_block.h"
 #include "tests/support/finite_difference.h"
 
 namespace ergo {
@@ -35,14 +36,7 @@ struct Block {
 };
 
 Block MakeBlock() {
-  ProfileBlock shape;
-  shape.width = 0.08;
-  shape.back_z = -0.05;
-  shape.front_z = 0.05;
-  shape.bottom_y = -0.04;
-  shape.front_radius = 0.02;
-  shape.top_spacing = 0.01;
-  shape.wall_spacing = 0.02;
+  const ProfileBlock shape = testing::SmallDesignBlock();
   Block block{MakeProfileBlock(shape), {}, -1};
   for (Eigen::Index v = 0; v < block.mesh.vertices.rows(); ++v) {
     const Eigen::Vector3d p = block.mesh.vertices.row(v);
