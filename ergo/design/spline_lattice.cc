@@ -24,6 +24,10 @@ SplineLattice::SplineLattice(const Eigen::MatrixXd& points, double spacing,
   CHECK(spacing > 0 && std::isfinite(spacing)) << "a spline lattice needs a spacing > 0 m";
   CHECK_EQ(points.cols(), 3);
   const Eigen::Index count = points.rows();
+  // Lattice indices are ints: the tools refuse knot spacings below 1 mm (scene_flags.cc).
+  CHECK(count == 0 ||
+        ((points.rowwise() - origin.transpose()).cwiseAbs().maxCoeff() / spacing < 1e8))
+      << "a spline lattice of spacing " << spacing << " m is too fine for these points";
 
   // Per point the 4 x 4 x 4 controls around it and their weights; the controls are numbered
   // in lexicographic lattice order, so the numbering depends on the geometry only.

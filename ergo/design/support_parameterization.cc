@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include <glog/logging.h>
-#include <Eigen/SparseCholesky>
 
 #include "ergo/design/spline_lattice.h"
 #include "ergo/mesh/cotangent_stiffness.h"
@@ -206,16 +205,19 @@ Eigen::VectorXd SupportParameterization::DesignFor(const Vertices& positions) co
           .cwiseProduct(metric_weight_);
     case DesignParameterization::kSpline: {
       if (size() == 0) return Eigen::VectorXd();
-      Eigen::SparseMatrix<double> normal = spline_basis_.transpose() * spline_basis_;
+      SparseMatrix normal = spline_basis_.transpose() * spline_basis_;
       // ε: 1e-9 of the mean diagonal makes the redundant layers' normal matrix definite and
       // picks the minimum-norm controls among them; it also damps the fit along directions
       // the lattice reaches only through corner weights ~(1/48)³ (4e-6 of a move on the test
       // block), which matters for a start design, not for a gradient.
       const double epsilon = 1e-9 * normal.diagonal().mean();
       for (Eigen::Index c = 0; c < normal.rows(); ++c) normal.coeffRef(c, c) += epsilon;
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-      CHECK(solver.info() == Eigen::Success) << "the spline's normal equations";
-      return solver.solve(spline_basis_.transpose() * NormalDisplacements(positions));
+      SparseCholesky cholesky;
+      cholesky.Analyze(normal);
+      const FactorizationStatus status = cholesky.Factorize(normal);
+      // BᵀB ⪰ 0 plus ε > 0 is positive definite: a failure is a bug, not a user error.
+      CHECK(status.ok) << "the spline's normal equations: " << status.message;
+      return cholesky.Solve(spline_basis_.transpose() * NormalDisplacements(positions));
     }
   }
   LOG(FATAL) << "unknown parameterization";

@@ -115,7 +115,7 @@ class SupportParameterization {
   SparseMatrix filter_matrix_;
   SparseCholesky filter_cholesky_;
   // kSpline: B, #active x controls.
-  Eigen::SparseMatrix<double> spline_basis_;
+  SparseMatrix spline_basis_;
 };
 
 }  // namespace ergo

@@ -137,6 +137,9 @@ double LengthFlag(const std::string& text, const char* flag, const char* word, d
   return value;
 }
 
+// The spline space's smallest knot spacing, m (DesignSpaceFlags).
+constexpr double kMinimumKnotSpacing = 1e-3;
+
 // The scene's design space with the flags' changes.
 DesignSpaceOptions DesignSpaceFlags(DesignSpaceOptions space) {
   if (FLAGS_parameterization == "filtered") {
@@ -152,6 +155,15 @@ DesignSpaceOptions DesignSpaceFlags(DesignSpaceOptions space) {
                      "use filtered, spline, normal or positions");
   }
   space.filter_radius = LengthFlag(FLAGS_filter_radius, "filter_radius", "auto", 0);
+  // auto is 0 here (2.5 skin edges, set by the scene).
+  if (space.parameterization == DesignParameterization::kSpline && space.filter_radius > 0 &&
+      space.filter_radius < kMinimumKnotSpacing) {
+    throw InputError("--filter_radius", "",
+                     "a spline knot spacing of " + FLAGS_filter_radius +
+                         " m is below 1 mm: finer than any support ergo meshes, with up to 64 "
+                         "controls per designed vertex",
+                     "give at least 0.001 (m), e.g. 0.018, or auto");
+  }
   if (FLAGS_pressure_smoothing_radius == "umbrella") {
     space.pressure_smoothing_radius = 0;
   } else if (FLAGS_pressure_smoothing_radius != "scene") {
