@@ -11,7 +11,7 @@
 // restricted to one component). Working in 3D instead of the support's base plane keeps
 // curved designed regions (the mouse's shell, the chair's front arc) single-valued.
 //
-// Properties the design space relies on (tests/design/spline_lattice_test.cc): the weights of
+// Properties the design space relies on (tests/design/spline_design_space_test.cc): the weights of
 // a row are ≥ 0 and sum to 1 (partition of unity), so a constant field passes unchanged and
 // |d| ≤ max|c|; a row has at most 64 non-zeros; a field linear in space is reproduced exactly
 // by its control values at the knots' Greville points (the knots themselves for cubics).
@@ -33,8 +33,6 @@ class SplineLattice {
   // `points` #P x 3, spacing s > 0 (m), knots at origin + s·(i, j, k).
   SplineLattice(const Eigen::MatrixXd& points, double spacing, const Eigen::Vector3d& origin);
 
-  double spacing() const { return spacing_; }
-  const Eigen::Vector3d& origin() const { return origin_; }
   int control_count() const { return static_cast<int>(controls_.rows()); }
   // Lattice coordinates (i, j, k) of each kept control; its position is origin + s·(i, j, k).
   const Eigen::MatrixXi& controls() const { return controls_; }

@@ -270,14 +270,13 @@ std::string SummaryMarkdown(const RunSummary& s) {
      << " % (afresh), smoothing strength γ " << Format("%.3g", s.gamma) << ", time "
      << Format("%.1f", s.wall_seconds) << " s, " << s.scenario->body->rest().vertices.rows()
      << " body vertices, " << s.scenario->support.vertices.rows() << " support vertices.\n\n"
-     << "Contact stiffness κ " << Format("%.3g", design.equilibrium.contact_stiffness)
-     << " Pa/m; design filter radius "
+     << "Contact stiffness κ " << Format("%.3g", design.equilibrium.contact_stiffness) << " Pa/m; "
      << (design.parameterization == DesignParameterization::kFiltered
-             ? Format("%.1f", design.filter_radius * 1e3) + " mm"
+             ? "design filter radius " + Format("%.1f", design.filter_radius * 1e3) + " mm"
          : design.parameterization == DesignParameterization::kSpline
-             ? "a cubic B-spline lattice of knot spacing " +
+             ? "design space a cubic B-spline lattice of knot spacing " +
                    Format("%.1f", design.filter_radius * 1e3) + " mm"
-             : std::string("none (raw vertices)"))
+             : std::string("design filter radius none (raw vertices)"))
      << "; pressure smoothing "
      << (design.pressure.smoothing_radius > 0
              ? "radius " + Format("%.1f", design.pressure.smoothing_radius * 1e3) + " mm"
