@@ -104,8 +104,12 @@ constexpr double kLateralMidfootBone = 0.015;  // lateral column's underside abo
 constexpr double kMedialArchBone = 0.035;      // medial arch's bones above the floor
 constexpr double kDorsalFootDepth = 0.006;     // over the top and sides of the foot
 constexpr double kToeCrease = 0.06;  // the core's cut: this fraction of the length past the ball
-constexpr double kHeelModulus = 45e3, kBallModulus = 58e3, kArchModulus = 40e3, kToeModulus = 40e3,
+constexpr double kHeelModulus = 45e3, kBallModulus = 58e3, kToeModulus = 40e3,
                  kDorsalFootModulus = 40e3;  // Pa
+// Between the heel's and the balls' chambered fat pads the plantar tissue is mostly muscle
+// (abductor digiti minimi, flexor digitorum brevis, abductor hallucis) and loose fat, like
+// the paper's seated tissue (5–15 kPa, §3.1): its upper end.
+constexpr double kMidfootModulus = 15e3;  // Pa
 
 struct FootModel {
   LengthFrame frame;
@@ -134,7 +138,7 @@ struct FootModel {
     double bone = Mix(kHeelPadDepth, midfoot_bone, SmoothStep(0.2, 0.32, s));
     bone = Mix(bone, kBallPadDepth, SmoothStep(ball_s - 0.12, ball_s - 0.05, s));
     const double plantar_depth = std::max(bone - height, kDorsalFootDepth);
-    double plantar_modulus = Mix(kHeelModulus, kArchModulus, SmoothStep(0.2, 0.32, s));
+    double plantar_modulus = Mix(kHeelModulus, kMidfootModulus, SmoothStep(0.2, 0.32, s));
     plantar_modulus =
         Mix(plantar_modulus, kBallModulus, SmoothStep(ball_s - 0.12, ball_s - 0.05, s));
     const TissuePrior plantar{plantar_depth, plantar_modulus};
