@@ -92,22 +92,25 @@ void SurfaceContact::set_stiffness(double kappa) {
   options_.stiffness = kappa;
 }
 
+void SurfaceContact::ChooseSkinShare(const Support& support) {
+  if (options_.skin_share != 0) return;
+  // The support's vertices near the body: inside the rest skin's box grown by its size.
+  const TriMesh& rest = skin_.mesh();
+  const Eigen::RowVector3d lo = rest.vertices.colwise().minCoeff(),
+                           hi = rest.vertices.colwise().maxCoeff();
+  const Eigen::RowVector3d margin = hi - lo;
+  std::vector<bool> near(static_cast<size_t>(support.mesh().vertices.rows()));
+  for (Eigen::Index j = 0; j < support.mesh().vertices.rows(); ++j) {
+    const Eigen::RowVector3d x = support.mesh().vertices.row(j);
+    near[j] =
+        (x.array() >= (lo - margin).array()).all() && (x.array() <= (hi + margin).array()).all();
+  }
+  options_.skin_share = ContactSkinShare(skin_areas_, support.vertex_areas(), near);
+}
+
 void SurfaceContact::MoveSkin(const Vertices& body_positions, const Support& support) {
   CHECK_GE(body_positions.rows(), body_vertex_count_);
-  if (options_.skin_share == 0) {
-    // The support's vertices near the body: inside the rest skin's box grown by its size.
-    const TriMesh& rest = skin_.mesh();
-    const Eigen::RowVector3d lo = rest.vertices.colwise().minCoeff(),
-                             hi = rest.vertices.colwise().maxCoeff();
-    const Eigen::RowVector3d margin = hi - lo;
-    std::vector<bool> near(static_cast<size_t>(support.mesh().vertices.rows()));
-    for (Eigen::Index j = 0; j < support.mesh().vertices.rows(); ++j) {
-      const Eigen::RowVector3d x = support.mesh().vertices.row(j);
-      near[j] =
-          (x.array() >= (lo - margin).array()).all() && (x.array() <= (hi + margin).array()).all();
-    }
-    options_.skin_share = ContactSkinShare(skin_areas_, support.vertex_areas(), near);
-  }
+  ChooseSkinShare(support);
   Vertices positions(body_ids_.size(), 3);
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
     positions.row(l) = body_positions.row(body_ids_[l]);
@@ -163,29 +166,21 @@ ContactSet SurfaceContact::SupportSprings(const Support& support, bool with_hess
 
 void SurfaceContact::Evaluate(const Vertices& body_positions, const Support& support,
                               bool with_hessian, std::vector<SupportPoint>* hints,
-                              SurfaceContacts* out) {
+                              SurfaceContacts* out, bool with_support_samples) {
   SurfaceContacts& c = *out;
-  MoveSkin(body_positions, support);
+  ChooseSkinShare(support);
   Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
     stiffness[body_ids_[l]] = 0.5 * options_.stiffness * SkinShare(options_) * skin_areas_[l];
   c.skin = EvaluateContacts(support, body_positions, body_ids_, stiffness, with_hessian, hints);
-  c.support = SupportSprings(support, with_hessian);
   c.support_springs = options_.support_springs;
-  c.energy = c.skin.energy + (c.support_springs ? c.support.energy : 0.0);
-  // What κ controls: one-way, the support's samples push nothing, so how far a convex support
-  // pokes between skin vertices is geometry, not stiffness (a calibration could not reach it).
-  c.max_penetration = c.support_springs
-                          ? std::max(c.skin.max_penetration, c.support.max_penetration)
-                          : c.skin.max_penetration;
+  c.skin_share = SkinShare(options_);
+  c.support_share = SupportShare(options_);
 
   // Per-vertex forces: each spring pushes its point and, oppositely, its feature's vertices.
   c.skin_force = Vertices::Zero(body_ids_.size(), 3);
   c.support_force = Vertices::Zero(support.mesh().vertices.rows(), 3);
-  c.skin_share = SkinShare(options_);
-  c.support_share = SupportShare(options_);
   c.skin_load = Eigen::VectorXd::Zero(body_ids_.size());
-  c.support_load = Eigen::VectorXd::Zero(support.mesh().vertices.rows());
   Eigen::VectorXi local_of = Eigen::VectorXi::Constant(body_positions.rows(), -1);
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l) local_of[body_ids_[l]] = static_cast<int>(l);
   for (const Contact& contact : c.skin.contacts) {
@@ -195,6 +190,36 @@ void SurfaceContact::Evaluate(const Vertices& body_positions, const Support& sup
       c.support_force.row(contact.anchor.feature.vertices[k]) -=
           contact.spring.gradient.segment<3>(3 + 3 * k).transpose();
   }
+  c.support = ContactSet();
+  c.support_load = Eigen::VectorXd::Zero(support.mesh().vertices.rows());
+  c.support_sampled = false;
+  if (c.support_springs || with_support_samples) {
+    SampleSupport(body_positions, support, with_hessian, out);
+  } else {
+    c.energy = c.skin.energy;
+    c.max_penetration = c.skin.max_penetration;
+  }
+}
+
+void SurfaceContact::AddSupportSamples(const Vertices& body_positions, const Support& support,
+                                       bool with_hessian, SurfaceContacts* out) {
+  if (out->support_sampled) return;
+  CHECK(!out->support_springs) << "support springs that push are sampled by Evaluate";
+  SampleSupport(body_positions, support, with_hessian, out);
+}
+
+void SurfaceContact::SampleSupport(const Vertices& body_positions, const Support& support,
+                                   bool with_hessian, SurfaceContacts* out) {
+  SurfaceContacts& c = *out;
+  MoveSkin(body_positions, support);
+  c.support = SupportSprings(support, with_hessian);
+  c.support_sampled = true;
+  c.energy = c.skin.energy + (c.support_springs ? c.support.energy : 0.0);
+  // What κ controls: one-way, the support's samples push nothing, so how far a convex support
+  // pokes between skin vertices is geometry, not stiffness (a calibration could not reach it).
+  c.max_penetration = c.support_springs
+                          ? std::max(c.skin.max_penetration, c.support.max_penetration)
+                          : c.skin.max_penetration;
   for (const Contact& contact : c.support.contacts) {
     c.support_load[contact.point] = contact.force().norm() / c.support_share;
     if (!c.support_springs) continue;  // sampled for the score only
@@ -207,7 +232,9 @@ void SurfaceContact::Evaluate(const Vertices& body_positions, const Support& sup
 
 double SurfaceContact::Energy(const Vertices& body_positions, const Support& support,
                               std::vector<SupportPoint>* hints) {
-  MoveSkin(body_positions, support);
+  ChooseSkinShare(support);
+  // One-way, the support's samples hold no energy: the skin tree need not follow.
+  if (options_.support_springs) MoveSkin(body_positions, support);
   Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(body_positions.rows());
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
     stiffness[body_ids_[l]] = 0.5 * options_.stiffness * SkinShare(options_) * skin_areas_[l];

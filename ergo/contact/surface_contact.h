@@ -78,8 +78,12 @@ struct SurfaceContacts {
   // the score-only support samples.
   double skin_share = 0.5, support_share = 0.5;
   bool support_springs = true;  // whether the support springs act in the equilibrium
-  double energy = 0;            // J
-  double max_penetration = 0;   // m: the skin's, and the support's too when its springs push
+  // Whether `support` and `support_load` hold the support's samples. Only score-only samples
+  // (one-way) may be left out, by an Evaluate that does not need them (a Newton iteration);
+  // SurfaceContact::AddSupportSamples fills them in at the same positions.
+  bool support_sampled = true;
+  double energy = 0;           // J
+  double max_penetration = 0;  // m: the skin's, and the support's too when its springs push
 
   // Springs that push in the equilibrium (one-way, the support's samples are scored only).
   int springs() const { return skin.size() + (support_springs ? support.size() : 0); }
@@ -113,19 +117,31 @@ class SurfaceContact {
   // `support`. with_hessian keeps each spring's Hessian. `hints`: per body vertex previous
   // anchors on the support (see EvaluateContacts), may be null. Moves the skin tree to the
   // body's positions: not thread-safe on one object.
+  // With one-way contact, with_support_samples = false leaves the score-only support samples
+  // out (they change no energy, force or Hessian): out->support_sampled is then false.
   void Evaluate(const Vertices& body_positions, const Support& support, bool with_hessian,
-                std::vector<SupportPoint>* hints, SurfaceContacts* out);
+                std::vector<SupportPoint>* hints, SurfaceContacts* out,
+                bool with_support_samples = true);
+  // Fills in the support's samples that an Evaluate at the same `body_positions` left out
+  // (nothing if out->support_sampled): the same samples, bit for bit, as an Evaluate with them.
+  void AddSupportSamples(const Vertices& body_positions, const Support& support, bool with_hessian,
+                         SurfaceContacts* out);
   // The contact energy only (line searches), J.
   double Energy(const Vertices& body_positions, const Support& support,
                 std::vector<SupportPoint>* hints);
 
-  // The skin as moved by the last Evaluate or Energy (the rest skin before the first).
+  // The skin as last moved to sample the support (the rest skin before the first).
   const Support& skin() const { return skin_; }
   const Eigen::VectorXi& body_ids() const { return body_ids_; }
   const Eigen::VectorXd& skin_areas() const { return skin_areas_; }
 
  private:
+  // Chooses α on first use when it is automatic (0).
+  void ChooseSkinShare(const Support& support);
   void MoveSkin(const Vertices& body_positions, const Support& support);
+  // The support's springs or samples and their loads (and forces, when they push).
+  void SampleSupport(const Vertices& body_positions, const Support& support, bool with_hessian,
+                     SurfaceContacts* out);
   ContactSet SupportSprings(const Support& support, bool with_hessian);
 
   Support skin_;

@@ -72,7 +72,7 @@ EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumO
     : body_(body),
       options_(options),
       potential_(body, SurfaceContactOptions{options.contact_stiffness, options.contact_skin_share,
-                                       options.contact_support_springs}) {
+                                             options.contact_support_springs}) {
   CHECK_GT(options.relative_tolerance, 0.0);
   CHECK_GE(options.max_iterations, 1);
   CHECK_GT(options.free_fall_mass_scale, 0.0);
@@ -159,6 +159,14 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
   TotalPotential::Evaluation& e = last_;
   last_exact_ = false;
   auto finish = [&](EquilibriumStatus status, const std::string& message) {
+    // The one-way contact's score-only support samples, left out of the Newton iterations,
+    // at the state returned (what the score and the pressures read).
+    if (status != EquilibriumStatus::kInterrupted && e.positions.allFinite() &&
+        e.positions.rows() > 0) {
+      const double before = e.contact_seconds;
+      potential_.AddSupportSamples(support, true, &e);
+      result.contact_seconds += e.contact_seconds - before;
+    }
     result.status = status;
     result.converged = status == EquilibriumStatus::kConverged;
     result.message = message;
@@ -170,7 +178,8 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       return finish(EquilibriumStatus::kInterrupted, "interrupted");
     const HessianKind first_kind =
         options_.exact_newton_first ? HessianKind::kExact : HessianKind::kProjectedPsd;
-    potential_.Evaluate(state, support, first_kind, true, &hints_, &e);
+    potential_.Evaluate(state, support, first_kind, true, &hints_, &e,
+                        /*with_support_samples=*/false);
     last_exact_ = first_kind == HessianKind::kExact;
     result.assembly_seconds += e.assembly_seconds;
     result.contact_seconds += e.contact_seconds;
@@ -242,8 +251,8 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
         if (first_kind == HessianKind::kExact) {
           ++result.projected_steps;
           TotalPotential::Evaluation projected;
-          potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_,
-                              &projected);
+          potential_.Evaluate(state, support, HessianKind::kProjectedPsd, true, &hints_, &projected,
+                              /*with_support_samples=*/false);
           result.assembly_seconds += projected.assembly_seconds;
           result.contact_seconds += projected.contact_seconds;
           e.body.hessian.swap(projected.body.hessian);
@@ -275,10 +284,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       const Clock::time_point start_clearance = Clock::now();
       double clearance = std::numeric_limits<double>::infinity();
       for (Eigen::Index l = 0; l < body_.skin().vertices.size(); ++l)
-        clearance = std::min(clearance,
-                             std::sqrt(support.ClosestPoint(
-                                 e.positions.row(body_.skin().vertices[l]).transpose())
-                                           .squared_distance));
+        clearance = std::min(
+            clearance,
+            std::sqrt(support.ClosestPoint(e.positions.row(body_.skin().vertices[l]).transpose())
+                          .squared_distance));
       const double move = system.layout()
                               .VertexVelocity(body_, state, e.positions, step)
                               .rowwise()

@@ -43,11 +43,11 @@ double TotalPotential::Energy(const BodyState& state, const Support& support,
 
 void TotalPotential::Evaluate(const BodyState& state, const Support& support, HessianKind kind,
                               bool with_hessian, std::vector<SupportPoint>* hints,
-                              Evaluation* evaluation) const {
+                              Evaluation* evaluation, bool with_support_samples) const {
   Evaluation& e = *evaluation;
   e.positions = DeformedPositions(body(), state);
   auto start = std::chrono::steady_clock::now();
-  contact_.Evaluate(e.positions, support, with_hessian, hints, &e.contacts);
+  contact_.Evaluate(e.positions, support, with_hessian, hints, &e.contacts, with_support_samples);
   e.contact_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
   system_.Evaluate(state, e.positions, kind, with_hessian, &e.body);
@@ -71,15 +71,23 @@ void TotalPotential::Evaluate(const BodyState& state, const Support& support, He
           contact.spring.gradient.segment<3>(3 + 3 * k).transpose();
     }
     if (with_hessian) {
-      system_.AddVertexBlockHessian(
-          state, e.positions, vertices,
-          SkinFeatureHessian(contact, kind == HessianKind::kProjectedPsd), &e.body);
+      system_.AddVertexBlockHessian(state, e.positions, vertices,
+                                    SkinFeatureHessian(contact, kind == HessianKind::kProjectedPsd),
+                                    &e.body);
     }
   }
   e.body.energy += e.contacts.energy;
   e.energy = e.body.energy;
   e.gradient = system_.Finalize(state, e.positions, kind, &e.body);
   e.assembly_seconds = SecondsSince(start);
+}
+
+void TotalPotential::AddSupportSamples(const Support& support, bool with_hessian,
+                                       Evaluation* evaluation) const {
+  if (evaluation->contacts.support_sampled) return;
+  const auto start = std::chrono::steady_clock::now();
+  contact_.AddSupportSamples(evaluation->positions, support, with_hessian, &evaluation->contacts);
+  evaluation->contact_seconds += SecondsSince(start);
 }
 
 double TotalPotential::ResidualNorm(const Eigen::VectorXd& gradient) const {

@@ -52,8 +52,13 @@ class TotalPotential {
                 std::vector<SupportPoint>* hints = nullptr) const;
 
   // Energy, reduced gradient and (with_hessian) K̂ of the given kind, with the contacts.
+  // with_support_samples = false leaves out the one-way contact's score-only support samples
+  // (a Newton iteration needs none of them); AddSupportSamples fills them in later.
   void Evaluate(const BodyState& state, const Support& support, HessianKind kind, bool with_hessian,
-                std::vector<SupportPoint>* hints, Evaluation* evaluation) const;
+                std::vector<SupportPoint>* hints, Evaluation* evaluation,
+                bool with_support_samples = true) const;
+  // The support samples an Evaluate left out, at its positions (their time in contact_seconds).
+  void AddSupportSamples(const Support& support, bool with_hessian, Evaluation* evaluation) const;
 
   // Residual norm used for convergence: sqrt(Σ forces² + Σ (torques / L)²) with L the
   // core's lever length (largest attached-vertex distance from the core centre), so that

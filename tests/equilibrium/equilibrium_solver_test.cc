@@ -50,8 +50,8 @@ Eigen::Vector3d NetMoment(const LayeredBody& body, const EquilibriumSolver& solv
   Eigen::Vector3d moment = body.options().external_torque;
   const Eigen::VectorXi& skin = body.skin().vertices;
   for (Eigen::Index l = 0; l < skin.size(); ++l)
-    moment += (e.positions.row(skin[l]).transpose() - c)
-                  .cross(e.contacts.skin_force.row(l).transpose());
+    moment +=
+        (e.positions.row(skin[l]).transpose() - c).cross(e.contacts.skin_force.row(l).transpose());
   for (Eigen::Index v = 0; v < e.positions.rows(); ++v)
     moment += (e.positions.row(v).transpose() - c).cross(body.vertex_mass()[v] * body.gravity());
   return moment;
@@ -73,6 +73,33 @@ TEST(Equilibrium, ContactForceBalancesTheLoadAndMomentsBalanceAboutTheCore) {
   EXPECT_LT(NetMoment(body, solver, result, support).norm(), 1e-6 * load.norm() * lever);
   EXPECT_GT(result.contact_vertices, 0);
   EXPECT_GT(result.max_penetration, 0);
+}
+
+// One-way, the Newton iterations leave the score-only support samples out; the solver fills
+// them in at the state it returns, so what the score reads there is what an evaluation of
+// that state with its samples gives.
+TEST(Equilibrium, TheReturnedStateCarriesItsSupportSamples) {
+  const LayeredBody body = CubeBody("tx,tz", Eigen::Vector3d(0, -5, 0));
+  const Support support(MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {16, 1, 16}), "fine slab");
+  EquilibriumOptions options = Options();
+  ASSERT_FALSE(options.contact_support_springs) << "the test is about one-way contact";
+  EquilibriumSolver solver(body, options);
+  const EquilibriumResult result = solver.Solve(support, TranslatedRestState(body, {0, 0.002, 0}));
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  const SurfaceContacts& kept = solver.last_evaluation().contacts;
+  TotalPotential::Evaluation fresh;
+  solver.potential().Evaluate(result.state, support, HessianKind::kExact, true, nullptr, &fresh);
+  ASSERT_TRUE(kept.support_sampled);
+  ASSERT_GT(fresh.contacts.support.size(), 0) << "slab vertices must poke into the skin";
+  ASSERT_EQ(kept.support.size(), fresh.contacts.support.size());
+  for (int i = 0; i < kept.support.size(); ++i) {
+    EXPECT_EQ(kept.support.contacts[i].point, fresh.contacts.support.contacts[i].point);
+    EXPECT_NEAR(kept.support.contacts[i].spring.energy,
+                fresh.contacts.support.contacts[i].spring.energy,
+                1e-12 * fresh.contacts.support.energy);
+  }
+  EXPECT_NEAR((kept.support_load - fresh.contacts.support_load).cwiseAbs().maxCoeff(), 0.0,
+              1e-12 * fresh.contacts.support_load.sum());
 }
 
 TEST(Equilibrium, AnOffCentreForceTiltsTheBodyUntilTheContactMomentBalancesIt) {

@@ -37,10 +37,9 @@ Scene MakeScene(unsigned seed) {
   const Eigen::Matrix3d turn = RotationExp(Eigen::Vector3d(0.05, 0.3, -0.04));
   LayeredBody body = testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options,
                                                  Eigen::Vector3d(0.003, 0.049, -0.002), turn);
-  TriMesh ground = MakeHeightfieldBlock({-0.12, -0.05, -0.12}, {0.12, 0, 0.12}, {24, 1, 24},
-                                        [](double x, double z) {
-                                          return 0.001 * std::sin(40 * x) * std::cos(35 * z);
-                                        });
+  TriMesh ground = MakeHeightfieldBlock(
+      {-0.12, -0.05, -0.12}, {0.12, 0, 0.12}, {24, 1, 24},
+      [](double x, double z) { return 0.001 * std::sin(40 * x) * std::cos(35 * z); });
   Scene scene{std::move(body), Support(ground, "bumpy ground"), {}};
   scene.state = RestState(scene.body);
   std::mt19937 rng(seed);
@@ -80,24 +79,23 @@ TEST_P(EquilibriumTotalPotential, GradientAndExactHessianMatchFiniteDifferences)
   for (const Contact& c : at.contacts.support.contacts) types.insert(c.anchor.feature.type);
   EXPECT_TRUE(types.count(FeatureType::kFace)) << "a support spring must slide on a skin face";
   // The energy-only path gives the same energy.
-  EXPECT_NEAR(potential.Energy(scene.state, scene.support), at.energy,
-              1e-12 * std::abs(at.energy));
+  EXPECT_NEAR(potential.Energy(scene.state, scene.support), at.energy, 1e-12 * std::abs(at.energy));
 
   auto energy = [&](const Eigen::VectorXd& step) {
     return potential.Energy(layout.Retract(scene.state, step), scene.support);
   };
   auto gradient = [&](const Eigen::VectorXd& step) {
     TotalPotential::Evaluation e;
-    potential.Evaluate(layout.Retract(scene.state, step), scene.support, HessianKind::kExact,
-                       false, nullptr, &e);
+    potential.Evaluate(layout.Retract(scene.state, step), scene.support, HessianKind::kExact, false,
+                       nullptr, &e);
     return e.gradient;
   };
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(layout.size());
   std::string report;
   // Smooth within the contact configuration: steps of 1e-7..1e-10 m stay inside it.
-  const double gradient_error = testing::WorstGradientError(
-      energy, at.gradient, zero, 1e-6 * at.gradient.norm(), testing::StepSweep(1e-7, 4), 4, 0, 3,
-      &report);
+  const double gradient_error =
+      testing::WorstGradientError(energy, at.gradient, zero, 1e-6 * at.gradient.norm(),
+                                  testing::StepSweep(1e-7, 4), 4, 0, 3, &report);
   EXPECT_LT(gradient_error, 1e-6) << report;
 
   // The exact Hessian against differences of the gradient, along random directions and
@@ -133,6 +131,48 @@ TEST_P(EquilibriumTotalPotential, GradientAndExactHessianMatchFiniteDifferences)
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(DenseSymmetric(projected.body.hessian))
           .eigenvalues();
   EXPECT_GT(eigenvalues.minCoeff(), -1e-9 * eigenvalues.cwiseAbs().maxCoeff());
+}
+
+// A Newton iteration of the one-way equilibrium leaves the score-only support samples out;
+// filled in afterwards they are the samples an evaluation with them gives, bit for bit, and
+// leaving them out changes no energy, gradient or Hessian entry. Two-way, the support's
+// springs push, so they are always evaluated.
+TEST_P(EquilibriumTotalPotential, SupportSamplesLeftOutAndFilledInLaterAreTheSame) {
+  const bool two_way = GetParam();
+  const Scene scene = MakeScene(7);
+  SurfaceContactOptions contact;
+  contact.stiffness = 3e7;
+  contact.skin_share = 0.5;
+  contact.support_springs = two_way;
+  const TotalPotential eager(scene.body, contact), lazy(scene.body, contact);
+
+  TotalPotential::Evaluation full, partial;
+  eager.Evaluate(scene.state, scene.support, HessianKind::kExact, true, nullptr, &full);
+  lazy.Evaluate(scene.state, scene.support, HessianKind::kExact, true, nullptr, &partial,
+                /*with_support_samples=*/false);
+  ASSERT_GT(full.contacts.support.size(), 3) << "ground vertices must poke into the skin";
+  EXPECT_EQ(partial.contacts.support_sampled, two_way);
+  EXPECT_EQ(partial.contacts.support.size(), two_way ? full.contacts.support.size() : 0);
+  EXPECT_EQ(partial.energy, full.energy);
+  EXPECT_EQ((partial.gradient - full.gradient).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(Eigen::MatrixXd(partial.body.hessian - full.body.hessian).cwiseAbs().maxCoeff(), 0.0);
+
+  lazy.AddSupportSamples(scene.support, true, &partial);
+  ASSERT_TRUE(partial.contacts.support_sampled);
+  ASSERT_EQ(partial.contacts.support.size(), full.contacts.support.size());
+  for (int i = 0; i < full.contacts.support.size(); ++i) {
+    const Contact& a = full.contacts.support.contacts[i];
+    const Contact& b = partial.contacts.support.contacts[i];
+    EXPECT_EQ(a.point, b.point);
+    EXPECT_EQ(a.spring.energy, b.spring.energy);
+    EXPECT_EQ((a.spring.gradient - b.spring.gradient).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ((a.spring.hessian - b.spring.hessian).cwiseAbs().maxCoeff(), 0.0);
+  }
+  EXPECT_EQ((partial.contacts.support_load - full.contacts.support_load).cwiseAbs().maxCoeff(),
+            0.0);
+  EXPECT_EQ((partial.contacts.skin_force - full.contacts.skin_force).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(partial.contacts.max_penetration, full.contacts.max_penetration);
+  EXPECT_EQ(partial.contacts.energy, full.contacts.energy);
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactModels, EquilibriumTotalPotential, ::testing::Values(true, false),
