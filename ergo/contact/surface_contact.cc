@@ -1,7 +1,6 @@
 #include "ergo/contact/surface_contact.h"
 
 #include <algorithm>
-#include <optional>
 
 #include <glog/logging.h>
 
@@ -83,6 +82,7 @@ SurfaceContact::SurfaceContact(const SurfaceContact& other)
       clearance_(other.clearance_),
       skin_hints_(other.skin_hints_),
       skin_positions_(other.skin_positions_),
+      support_positions_(other.support_positions_),
       support_shape_(other.support_shape_) {
   // The rebuilt tree has a new shape stamp: old hints seed searches but prove nothing.
 }
@@ -114,16 +114,26 @@ void SurfaceContact::MoveSkin(const Vertices& body_positions, const Support& sup
   Vertices positions(body_ids_.size(), 3);
   for (Eigen::Index l = 0; l < body_ids_.size(); ++l)
     positions.row(l) = body_positions.row(body_ids_[l]);
-  const Eigen::Index support_count = support.mesh().vertices.rows();
-  if (support.shape() != support_shape_ || clearance_.size() != support_count) {
+  const Vertices& support_positions = support.mesh().vertices;
+  const Eigen::Index support_count = support_positions.rows();
+  if (clearance_.size() != support_count || support_positions_.rows() != support_count) {
     clearance_ = Eigen::VectorXd::Zero(support_count);
     skin_hints_.assign(static_cast<size_t>(support_count), SupportPoint());
-    support_shape_ = support.shape();
   } else {
     // Every point of the skin moved at most as far as its farthest vertex (the surface is
     // the vertices' piecewise-linear interpolation), so each bound shrinks by that much.
     const double moved = (positions - skin_positions_).rowwise().norm().maxCoeff();
     clearance_ = (clearance_.array() - moved).cwiseMax(0.0);
+    // A changed support (same vertices, moved: a design step): each vertex's bound shrinks by
+    // its own move too. The hints are points of the skin, which the support does not move.
+    if (support.shape() != support_shape_) {
+      clearance_ =
+          (clearance_ - (support_positions - support_positions_).rowwise().norm()).cwiseMax(0.0);
+    }
+  }
+  if (support.shape() != support_shape_) {
+    support_positions_ = support_positions;
+    support_shape_ = support.shape();
   }
   skin_positions_ = positions;
   skin_.UpdateVertices(positions);
@@ -134,32 +144,44 @@ ContactSet SurfaceContact::SupportSprings(const Support& support, bool with_hess
   const Vertices& x = support.mesh().vertices;
   const Eigen::VectorXd& areas = support.vertex_areas();
   const auto count = static_cast<Eigen::Index>(x.rows());
-  std::vector<std::optional<Contact>> found(static_cast<size_t>(count));
+  auto stiffness = [&](Eigen::Index j) {
+    return 0.5 * options_.stiffness * SupportShare(options_) * areas[j];
+  };
+  // First which vertices are inside the skin (queries only where the bounds allow), then the
+  // springs of those alone: thousands of springs, not one slot per support vertex.
+  std::vector<char> inside(static_cast<size_t>(count), 0);
 #pragma omp parallel for schedule(dynamic, 256) if (count >= 1024)
   for (Eigen::Index j = 0; j < count; ++j) {
     const Eigen::Vector3d p = x.row(j).transpose();
     if (clearance_[j] > 0 || !skin_.InBoundingBox(p)) continue;
-    const double k = 0.5 * options_.stiffness * SupportShare(options_) * areas[j];
-    if (!(k > 0)) continue;
+    if (!(stiffness(j) > 0)) continue;
     SupportPoint& hint = skin_hints_[j];
     hint = skin_.ClosestPoint(p, hint.triangle >= 0 ? &hint : nullptr);
     if (!hint.inside) {
       clearance_[j] = std::sqrt(hint.squared_distance);
       continue;
     }
-    Contact contact;
-    contact.point = static_cast<int>(j);
-    contact.anchor = hint;
-    contact.stiffness = k;
-    contact.spring =
-        EvaluateSlidingAnchor(hint.feature.type, p, skin_.Positions(hint.feature), k, with_hessian);
-    found[j] = contact;
+    inside[j] = 1;
   }
-  for (Eigen::Index j = 0; j < count; ++j) {
-    if (!found[j]) continue;
-    set.energy += found[j]->spring.energy;
-    set.max_penetration = std::max(set.max_penetration, found[j]->penetration());
-    set.contacts.push_back(*found[j]);
+  std::vector<int> points;
+  for (Eigen::Index j = 0; j < count; ++j)
+    if (inside[j]) points.push_back(static_cast<int>(j));
+  set.contacts.resize(points.size());
+  const auto springs = static_cast<int>(points.size());
+#pragma omp parallel for schedule(dynamic, 64) if (springs >= 256)
+  for (int i = 0; i < springs; ++i) {
+    const int j = points[i];
+    Contact& contact = set.contacts[i];
+    contact.point = j;
+    contact.anchor = skin_hints_[j];
+    contact.stiffness = stiffness(j);
+    contact.spring = EvaluateSlidingAnchor(contact.anchor.feature.type, x.row(j).transpose(),
+                                           skin_.Positions(contact.anchor.feature),
+                                           contact.stiffness, with_hessian);
+  }
+  for (const Contact& contact : set.contacts) {
+    set.energy += contact.spring.energy;
+    set.max_penetration = std::max(set.max_penetration, contact.penetration());
   }
   return set;
 }

@@ -151,11 +151,13 @@ class SurfaceContact {
   Eigen::Index body_vertex_count_ = 0;
   // Conservative advancement for the support's vertices against the moving skin: a lower
   // bound on each one's distance to the skin (0 = unknown). The skin moves at most the
-  // largest skin-vertex displacement between evaluations, so a vertex whose bound exceeds
-  // it is still outside and needs no query.
+  // largest skin-vertex displacement between evaluations, and a support vertex by its own
+  // displacement when the support changes (a design step), so a vertex whose bound exceeds
+  // both is still outside and needs no query.
   Eigen::VectorXd clearance_;
   std::vector<SupportPoint> skin_hints_;  // per support vertex: last closest skin point
   Vertices skin_positions_;               // skin vertex positions the bounds refer to
+  Vertices support_positions_;            // support vertex positions the bounds refer to
   std::uint64_t support_shape_ = 0;       // the support shape the bounds refer to
 };
 
