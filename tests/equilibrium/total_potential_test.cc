@@ -175,6 +175,45 @@ TEST_P(EquilibriumTotalPotential, SupportSamplesLeftOutAndFilledInLaterAreTheSam
   EXPECT_EQ(partial.contacts.energy, full.contacts.energy);
 }
 
+// The support's samples skip vertices whose distance bound shows them outside the skin. After
+// a design step (the support's vertices moved, each by its own amount) the bounds of the
+// last evaluation still decide, shrunk by each vertex's move: the samples must be those of a
+// potential that never saw the old support.
+TEST_P(EquilibriumTotalPotential, SupportSamplesAfterTheSupportMovedAreThoseOfAFreshPotential) {
+  const bool two_way = GetParam();
+  const Scene scene = MakeScene(11);
+  SurfaceContactOptions contact;
+  contact.stiffness = 3e7;
+  contact.skin_share = 0.5;
+  contact.support_springs = two_way;
+  const TotalPotential stale(scene.body, contact), fresh(scene.body, contact);
+  TotalPotential::Evaluation before, after, reference;
+  // First half the ground 3 mm lower (its vertices outside the skin, with positive bounds),
+  // then the ground itself: those vertices rise into the skin while the skin stands still.
+  TriMesh lowered = scene.support.mesh();
+  for (Eigen::Index j = 0; j < lowered.vertices.rows(); ++j)
+    if (lowered.vertices(j, 0) > 0) lowered.vertices(j, 1) -= 3e-3;
+  stale.Evaluate(scene.state, Support(lowered, "lowered ground"), HessianKind::kExact, true,
+                 nullptr, &before);
+  const Support& stepped = scene.support;
+  stale.Evaluate(scene.state, stepped, HessianKind::kExact, true, nullptr, &after);
+  fresh.Evaluate(scene.state, stepped, HessianKind::kExact, true, nullptr, &reference);
+  std::set<int> earlier, newly;
+  for (const Contact& c : before.contacts.support.contacts) earlier.insert(c.point);
+  for (const Contact& c : reference.contacts.support.contacts)
+    if (!earlier.count(c.point)) newly.insert(c.point);
+  ASSERT_GT(newly.size(), 3u) << "raised ground vertices must newly poke into the skin";
+  ASSERT_EQ(after.contacts.support.size(), reference.contacts.support.size());
+  for (int i = 0; i < reference.contacts.support.size(); ++i) {
+    EXPECT_EQ(after.contacts.support.contacts[i].point,
+              reference.contacts.support.contacts[i].point);
+    EXPECT_NEAR(after.contacts.support.contacts[i].spring.energy,
+                reference.contacts.support.contacts[i].spring.energy,
+                1e-12 * reference.contacts.support.energy);
+  }
+  EXPECT_NEAR(after.energy, reference.energy, 1e-12 * std::abs(reference.energy));
+}
+
 INSTANTIATE_TEST_SUITE_P(ContactModels, EquilibriumTotalPotential, ::testing::Values(true, false),
                          [](const auto& info) { return info.param ? "two_way" : "one_way"; });
 
