@@ -99,12 +99,13 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
     std::vector<double> phi, fresh;
     int best = -1, best_checked = -1;
     double best_fresh = state.kept_fresh_phi;
+    bool placed = false;  // a check reached equilibrium at every placement
     for (size_t c = 0; c < r.candidates.size() && static_cast<int>(phi.size()) < checks; ++c) {
       if (control.stop && control.stop->load()) break;
       if (r.candidates[c] == state.kept_x) continue;  // the round's start
-      // Past the time budget only the round's best is checked (else the round is lost).
-      if (!phi.empty() && budget.max_seconds > 0 && seconds() + check_seconds > budget.max_seconds)
-        break;
+      // Past the time budget only one design is placed afresh (else the round is lost): the
+      // round's best, or the next if the body found no equilibrium on it.
+      if (placed && budget.max_seconds > 0 && seconds() + check_seconds > budget.max_seconds) break;
       const double check_start = seconds();
       const double value = problem.fresh_score(r.candidates[c], &state.timing);
       check_seconds =
@@ -113,6 +114,7 @@ RoundsResult MinimizeInRounds(Optimizer& optimizer, const RoundsProblem& problem
       ++state.evaluations;
       phi.push_back(r.candidate_phi[c]);
       fresh.push_back(value);
+      placed = placed || std::isfinite(value);
       if (std::isfinite(value) && value < best_fresh) {
         best_fresh = value;
         best = static_cast<int>(c);

@@ -4,7 +4,10 @@
 // rounds from the kept design, and reports the optimiser's own value beside the fresh one.
 #include "solvers/fresh_rounds.h"
 
+#include <chrono>
 #include <cmath>
+#include <limits>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -184,6 +187,32 @@ TEST(Solvers, FreshRoundsKeepTheirChecksInsideATimeBudget) {
   EXPECT_TRUE(idle.round_seconds.empty());
   EXPECT_EQ(none.kept_x, x0);
   EXPECT_EQ(none.result.stop_reason, "budget: 100 s wall");
+}
+
+// Past the time budget one design is still placed afresh so that the round is not lost; if
+// the body finds no equilibrium on the round's best (a NaN score), the next is placed instead
+// of giving the whole round up.
+TEST(Solvers, FreshRoundsPastTheBudgetTryTheNextDesignWhenTheBestFindsNoEquilibrium) {
+  auto f = std::make_shared<IllConditionedQuadratic>(6, 10, 7);
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(6);
+  const double phi0 = f->Evaluate(x0, false).phi;
+  int checks = 0;
+  RoundsProblem problem;
+  problem.make_objective = [&] { return std::make_unique<DriftingObjective>(f, 0.0); };
+  problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming*) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));  // past the 50 ms budget
+    return checks++ == 0 ? std::numeric_limits<double>::quiet_NaN() : f->Evaluate(x, false).phi;
+  };
+  Budget budget;
+  budget.max_evaluations = 40;
+  budget.max_seconds = 0.05;
+  RoundsOptions options;
+  options.candidates = 3;
+  BudgetRecorder optimizer(MakeOptimizer("nlopt-lbfgs", {}, nullptr));
+  const RoundsResult r = MinimizeInRounds(optimizer, problem, x0, phi0, budget, {}, options);
+  EXPECT_EQ(checks, 2) << "the best failed, the next was placed, and no third past the budget";
+  EXPECT_LT(r.kept_fresh_phi, phi0);
+  EXPECT_NE(r.kept_x, x0);
 }
 
 }  // namespace
