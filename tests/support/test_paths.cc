@@ -3,7 +3,10 @@
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
@@ -31,6 +34,39 @@ std::string RealScanDir() {
   return "";
 }
 
+namespace {
+
+// The scratch directories of this test process, removed when it exits (each ctest run left
+// about a hundred behind) unless ERGO_KEEP_SCRATCH is set, to look at a failure's files.
+class ScratchDirectories {
+ public:
+  ~ScratchDirectories() {
+    if (std::getenv("ERGO_KEEP_SCRATCH") != nullptr) return;
+    for (const auto& [dir, owner] : dirs_) {
+      // A death test's forked child exits too: only the process that made a directory
+      // removes it.
+      if (owner != ::getpid()) continue;
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  }
+  void Add(const fs::path& dir) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    dirs_.emplace_back(dir, ::getpid());
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::pair<fs::path, pid_t>> dirs_;
+};
+
+ScratchDirectories& Scratch() {
+  static ScratchDirectories directories;
+  return directories;
+}
+
+}  // namespace
+
 std::string MakeScratchDir(const std::string& prefix) {
   static std::atomic<int> counter{0};
   const fs::path dir =
@@ -38,6 +74,7 @@ std::string MakeScratchDir(const std::string& prefix) {
       ("ergo_" + prefix + "_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  Scratch().Add(dir);
   return dir.string();
 }
 

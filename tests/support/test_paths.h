@@ -14,7 +14,8 @@ std::string PeerMeshDir();
 // ../shared/real-scans (a real foot scan and its licence) next to the checkout, or "".
 std::string RealScanDir();
 
-// A fresh empty directory under the system temp dir, unique per call.
+// A fresh empty directory under the system temp dir, unique per call; removed when the test
+// process exits (set ERGO_KEEP_SCRATCH=1 to keep it).
 std::string MakeScratchDir(const std::string& prefix);
 
 // True in the AddressSanitizer + UBSan build (tools/setup.sh test --sanitize), which runs
