@@ -116,6 +116,7 @@ void SurfaceContact::MoveSkin(const Vertices& body_positions, const Support& sup
     positions.row(l) = body_positions.row(body_ids_[l]);
   const Vertices& support_positions = support.mesh().vertices;
   const Eigen::Index support_count = support_positions.rows();
+  const bool support_changed = support.shape() != support_shape_;
   if (clearance_.size() != support_count || support_positions_.rows() != support_count) {
     clearance_ = Eigen::VectorXd::Zero(support_count);
     skin_hints_.assign(static_cast<size_t>(support_count), SupportPoint());
@@ -126,12 +127,12 @@ void SurfaceContact::MoveSkin(const Vertices& body_positions, const Support& sup
     clearance_ = (clearance_.array() - moved).cwiseMax(0.0);
     // A changed support (same vertices, moved: a design step): each vertex's bound shrinks by
     // its own move too. The hints are points of the skin, which the support does not move.
-    if (support.shape() != support_shape_) {
+    if (support_changed) {
       clearance_ =
           (clearance_ - (support_positions - support_positions_).rowwise().norm()).cwiseMax(0.0);
     }
   }
-  if (support.shape() != support_shape_) {
+  if (support_changed) {
     support_positions_ = support_positions;
     support_shape_ = support.shape();
   }

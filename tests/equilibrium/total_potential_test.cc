@@ -59,15 +59,22 @@ Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
   return full;
 }
 
+// κ for about a millimetre of the cube's pressing; α = ½; the support's springs push when
+// two-way.
+SurfaceContactOptions ContactOptions(bool two_way) {
+  SurfaceContactOptions contact;
+  contact.stiffness = 3e7;
+  contact.skin_share = 0.5;
+  contact.support_springs = two_way;
+  return contact;
+}
+
 class EquilibriumTotalPotential : public ::testing::TestWithParam<bool> {};
 
 TEST_P(EquilibriumTotalPotential, GradientAndExactHessianMatchFiniteDifferences) {
   const bool two_way = GetParam();
   const Scene scene = MakeScene(5);
-  SurfaceContactOptions contact;
-  contact.stiffness = 3e7;
-  contact.skin_share = 0.5;
-  contact.support_springs = two_way;
+  const SurfaceContactOptions contact = ContactOptions(two_way);
   const TotalPotential potential(scene.body, contact);
   const ReducedLayout& layout = potential.system().layout();
 
@@ -140,10 +147,7 @@ TEST_P(EquilibriumTotalPotential, GradientAndExactHessianMatchFiniteDifferences)
 TEST_P(EquilibriumTotalPotential, SupportSamplesLeftOutAndFilledInLaterAreTheSame) {
   const bool two_way = GetParam();
   const Scene scene = MakeScene(7);
-  SurfaceContactOptions contact;
-  contact.stiffness = 3e7;
-  contact.skin_share = 0.5;
-  contact.support_springs = two_way;
+  const SurfaceContactOptions contact = ContactOptions(two_way);
   const TotalPotential eager(scene.body, contact), lazy(scene.body, contact);
 
   TotalPotential::Evaluation full, partial;
@@ -182,10 +186,7 @@ TEST_P(EquilibriumTotalPotential, SupportSamplesLeftOutAndFilledInLaterAreTheSam
 TEST_P(EquilibriumTotalPotential, SupportSamplesAfterTheSupportMovedAreThoseOfAFreshPotential) {
   const bool two_way = GetParam();
   const Scene scene = MakeScene(11);
-  SurfaceContactOptions contact;
-  contact.stiffness = 3e7;
-  contact.skin_share = 0.5;
-  contact.support_springs = two_way;
+  const SurfaceContactOptions contact = ContactOptions(two_way);
   const TotalPotential stale(scene.body, contact), fresh(scene.body, contact);
   TotalPotential::Evaluation before, after, reference;
   // First half the ground 3 mm lower (its vertices outside the skin, with positive bounds),
