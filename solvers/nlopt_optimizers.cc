@@ -110,6 +110,20 @@ double NloptCallback(unsigned n, const double* u, double* gradient, void* data) 
   return static_cast<Run*>(data)->Evaluate(u, gradient);
 }
 
+nlopt::algorithm Algorithm(NloptMethod method) {
+  switch (method) {
+    case NloptMethod::kMma:
+      return nlopt::LD_MMA;
+    case NloptMethod::kCcsaq:
+      return nlopt::LD_CCSAQ;
+    case NloptMethod::kLbfgs:
+      return nlopt::LD_LBFGS;
+    case NloptMethod::kTnewton:
+      return nlopt::LD_TNEWTON_PRECOND_RESTART;
+  }
+  return nlopt::LD_LBFGS;
+}
+
 class NloptOptimizer : public Optimizer {
  public:
   NloptOptimizer(NloptMethod method, MoveLimits limits) : method_(method), limits_(limits) {
@@ -126,6 +140,8 @@ class NloptOptimizer : public Optimizer {
         return "nlopt-ccsaq";
       case NloptMethod::kLbfgs:
         return "nlopt-lbfgs";
+      case NloptMethod::kTnewton:
+        return "nlopt-tnewton";
     }
     return "nlopt";
   }
@@ -162,9 +178,7 @@ class NloptOptimizer : public Optimizer {
       return monitor.Finish("gradient tolerance at x₀");
     }
 
-    const nlopt::algorithm algorithm = method_ == NloptMethod::kMma     ? nlopt::LD_MMA
-                                       : method_ == NloptMethod::kCcsaq ? nlopt::LD_CCSAQ
-                                                                        : nlopt::LD_LBFGS;
+    const nlopt::algorithm algorithm = Algorithm(method_);
     std::string reason;
     for (int round = 0;; ++round) {
       if (monitor.ShouldStop()) break;

@@ -51,8 +51,8 @@ std::string OptimizerResult::FullReport() const {
 }
 
 std::vector<std::string> OptimizerNames() {
-  return {"paper-ncg",   "ceres-lbfgs", "ceres-ncg", "nlopt-mma",
-          "nlopt-ccsaq", "nlopt-lbfgs", "steepest"};
+  return {"paper-ncg",   "ceres-lbfgs", "ceres-ncg",     "nlopt-mma",
+          "nlopt-ccsaq", "nlopt-lbfgs", "nlopt-tnewton", "steepest"};
 }
 
 std::unique_ptr<Optimizer> MakeOptimizer(const std::string& name, const OptimizerOptions& options,
@@ -66,6 +66,7 @@ std::unique_ptr<Optimizer> MakeOptimizer(const std::string& name, const Optimize
   if (name == "nlopt-mma") return MakeNloptOptimizer(NloptMethod::kMma, options.limits);
   if (name == "nlopt-ccsaq") return MakeNloptOptimizer(NloptMethod::kCcsaq, options.limits);
   if (name == "nlopt-lbfgs") return MakeNloptOptimizer(NloptMethod::kLbfgs, options.limits);
+  if (name == "nlopt-tnewton") return MakeNloptOptimizer(NloptMethod::kTnewton, options.limits);
   if (error) {
     *error = "unknown optimiser \"" + name + "\"; known:";
     for (const std::string& known : OptimizerNames()) *error += " " + known;

@@ -157,7 +157,7 @@ struct OptimizerOptions {
 };
 
 // "paper-ncg", "steepest", "ceres-lbfgs", "ceres-ncg", "nlopt-mma", "nlopt-ccsaq",
-// "nlopt-lbfgs".
+// "nlopt-lbfgs", "nlopt-tnewton".
 std::vector<std::string> OptimizerNames();
 // The optimiser called `name`, or nullptr with *error naming the valid names.
 std::unique_ptr<Optimizer> MakeOptimizer(const std::string& name, const OptimizerOptions& options,

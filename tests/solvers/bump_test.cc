@@ -65,7 +65,8 @@ TEST_P(BumpOptimizerTest, LowersPhiByAThirdWithin60EvaluationsAndReportsOnlyEval
   // 60 evaluations; 20 under the sanitizers (10-20x slower; measured in the Release run at 20,
   // every optimiser is 58.6 % (steepest) to 92.3 % lower: the 30 % asserted holds with room).
   constexpr int kBudget = testing::SanitizedBuild() ? 20 : 60;
-  if (testing::SanitizedBuild() && (GetParam() == "nlopt-mma" || GetParam() == "nlopt-ccsaq"))
+  if (testing::SanitizedBuild() &&
+      (GetParam() == "nlopt-mma" || GetParam() == "nlopt-ccsaq" || GetParam() == "nlopt-tnewton"))
     GTEST_SKIP() << "nlopt-lbfgs runs the same NLopt adapter under the sanitizers";
   DesignObjective objective(FollowedProblem());
   std::string error;

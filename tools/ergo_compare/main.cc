@@ -49,9 +49,10 @@
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
 
-DEFINE_string(optimizers,
-              "paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,steepest",
-              "comma-separated optimisers to compare");
+DEFINE_string(
+    optimizers,
+    "paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,nlopt-tnewton,steepest",
+    "comma-separated optimisers to compare");
 DEFINE_int32(max_evals, 200, "evaluation budget per optimiser (every φ evaluation counts)");
 DEFINE_double(max_seconds, 0, "wall-clock budget per optimiser, s; 0 = unlimited");
 DEFINE_double(gradient_tolerance, 1e-8,
@@ -88,7 +89,8 @@ constexpr char kUsage[] =
     "compares outer optimisers on one design scenario with the same budget.\n"
     "  ergo_compare [--flagfile=data/SCENARIO.flags | --scenario=bump [--bump_height=...]]\n"
     "      "
-    "--optimizers=paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,steepest\n"
+    "--optimizers=paper-ncg,ceres-lbfgs,ceres-ncg,nlopt-mma,nlopt-ccsaq,nlopt-lbfgs,nlopt-tnewton,"
+    "steepest\n"
     "      --max_evals=N [--max_seconds=S] --out=DIR";
 
 [[noreturn]] void FlagError(const std::string& flag, const std::string& what,

@@ -45,7 +45,8 @@
 
 DEFINE_string(optimizer, "nlopt-lbfgs",
               "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, "
-              "nlopt-lbfgs (default; ceres-lbfgs when --preset=paper and this flag is not given)");
+              "nlopt-tnewton, nlopt-lbfgs (default; ceres-lbfgs when --preset=paper and this flag "
+              "is not given)");
 DECLARE_string(preset);
 DEFINE_string(designer, "ergo",
               "who designs the support: ergo (the optimiser, --optimizer) or a geometric "

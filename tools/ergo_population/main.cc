@@ -66,7 +66,7 @@ DEFINE_double(temperature, 0.05, "worst: the log-sum-exp temperature, in units o
 DEFINE_double(cvar_alpha, 0.5, "cvar: α in [0, 1); the worst 1 − α of the population by weight");
 DEFINE_string(optimizer, "nlopt-lbfgs",
               "optimiser: paper-ncg, steepest, ceres-lbfgs, ceres-ncg, nlopt-mma, nlopt-ccsaq, "
-              "nlopt-lbfgs");
+              "nlopt-tnewton, nlopt-lbfgs");
 DEFINE_int32(max_evals, 40, "budget: population evaluations (fresh re-scoring included)");
 DEFINE_double(max_seconds, 0, "budget: wall seconds; 0 = unlimited");
 DEFINE_int32(round_evals, 40, "evaluations per round (see ergo_optimize --help); 0 = one round");
