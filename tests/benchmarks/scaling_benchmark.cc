@@ -14,7 +14,12 @@
 //   tools/plot_scaling.py scaling.json scaling.png   # table, fitted exponents, log-log plot
 //
 // The 40k body takes minutes to mesh and to solve cold; the whole run takes about 15–25
-// minutes on 2 cores.
+// minutes on 2 cores. Diagnostics, set in the environment: ERGO_TRACE_NEWTON=1 prints every
+// Newton iteration (residual N, step η, contact vertices) to stderr; ERGO_NO_REUSE=1
+// refactorises at every Newton iteration (no PCG on an old factor); ERGO_NO_PREDICTOR=1
+// starts the warm solve without the tangent predictor.
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
@@ -65,6 +70,15 @@ ScaledScene& SceneFor(int body_thousands, int support_thousands) {
   options.block.top_spacing = SupportSpacingFor(support_thousands);
   s.scenario = MakeChairScenario(options);
   s.scenario.design.gamma = 0;  // the flagfile's (the filter keeps the design smooth)
+  if (std::getenv("ERGO_NO_REUSE")) s.scenario.design.equilibrium.reuse_factorization = false;
+  if (std::getenv("ERGO_NO_PREDICTOR")) s.scenario.design.tangent_predictor = false;
+  if (std::getenv("ERGO_TRACE_NEWTON")) {
+    s.scenario.design.equilibrium.progress = [](int it, double residual, double step,
+                                                int contacts) {
+      std::fprintf(stderr, "newton %d residual %.3e step %.3g contacts %d\n", it, residual, step,
+                   contacts);
+    };
+  }
   s.after_cold = std::make_unique<DesignProblem>(s.scenario.MakeProblem());
   s.after_cold->set_placement(DesignPlacement::kFresh);
   s.x0 = s.after_cold->InitialDesign();
