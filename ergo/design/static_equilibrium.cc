@@ -80,9 +80,9 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   equilibrium.relative_tolerance = options.relative_tolerance;
   equilibrium.max_iterations = options.max_iterations;
   equilibrium.stop = &stop;
-  equilibrium.progress = [&](int iteration, double residual, double step, int contacts) {
-    say(Format("Newton %3.0f  residual %.3e N  step %.3g  contact vertices %.0f", iteration,
-               residual, step, contacts));
+  equilibrium.progress = [&](const NewtonIterationReport& r) {
+    say(Format("Newton %3.0f  residual %.3e N  step %.3g  contact vertices %.0f", r.iteration,
+               r.residual, r.step, r.contact_vertices));
     if (should_stop()) stop = true;
   };
   const bool calibrate = options.contact_stiffness == 0;

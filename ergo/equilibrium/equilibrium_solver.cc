@@ -17,6 +17,32 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Skin vertices that entered, left or changed feature between two contact sets (both
+// ordered by point index).
+struct ActiveSetChange {
+  int entered = 0, left = 0, switched = 0;
+};
+
+ActiveSetChange CompareActiveSets(const ContactSet& before, const ContactSet& after) {
+  ActiveSetChange change;
+  size_t i = 0, j = 0;
+  while (i < before.contacts.size() || j < after.contacts.size()) {
+    if (j == after.contacts.size() ||
+        (i < before.contacts.size() && before.contacts[i].point < after.contacts[j].point)) {
+      ++change.left;
+      ++i;
+    } else if (i == before.contacts.size() || after.contacts[j].point < before.contacts[i].point) {
+      ++change.entered;
+      ++j;
+    } else {
+      if (before.contacts[i].anchor.feature != after.contacts[j].anchor.feature) ++change.switched;
+      ++i;
+      ++j;
+    }
+  }
+  return change;
+}
+
 // Trace of the diagonal of an upper-triangular compressed matrix.
 double DiagonalSum(const SparseMatrix& upper) {
   double sum = 0;
@@ -62,6 +88,8 @@ std::string EquilibriumResult::FullReport() const {
       << "  energy " << energy << " J, contact force (" << contact_force.transpose() << ") N\n"
       << "  linear algebra: " << factorizations << " factorisations, " << pcg_iterations
       << " PCG iterations on reused factors, " << line_search_trials << " line-search trials\n"
+      << "  active set: " << contacts_entered << " entered, " << contacts_left << " left, "
+      << feature_switches << " feature switches\n"
       << "  time: assembly " << assembly_seconds << " s, contact " << contact_seconds
       << " s, factorisation " << factorization_seconds << " s, solves " << solve_seconds
       << " s, line search " << line_search_seconds << " s, total " << total_seconds << " s";
@@ -158,6 +186,24 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
 
   TotalPotential::Evaluation& e = last_;
   last_exact_ = false;
+  ContactSet previous_skin;  // the skin's springs at the previous iterate
+  ActiveSetChange change;
+  const HessianKind first_kind =
+      options_.exact_newton_first ? HessianKind::kExact : HessianKind::kProjectedPsd;
+  auto evaluate = [&] {
+    potential_.Evaluate(state, support, first_kind, true, &hints_, &e,
+                        /*with_support_samples=*/false);
+    last_exact_ = first_kind == HessianKind::kExact;
+    result.assembly_seconds += e.assembly_seconds;
+    result.contact_seconds += e.contact_seconds;
+    result.residual = potential_.ResidualNorm(e.gradient);
+    result.relative_residual = result.residual / (load > 0 ? load : 1.0);
+    result.energy = e.energy;
+    result.contact_vertices = e.contacts.skin_vertices_in_contact();
+    result.contact_springs = e.contacts.springs();
+    result.max_penetration = e.contacts.max_penetration;
+    result.contact_force = e.contacts.TotalForceOnBody();
+  };
   auto finish = [&](EquilibriumStatus status, const std::string& message) {
     // The one-way contact's score-only support samples, left out of the Newton iterations,
     // at the state returned (what the score and the pressures read).
@@ -176,21 +222,18 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
   for (int iteration = 0;; ++iteration) {
     if (options_.stop && options_.stop->load())
       return finish(EquilibriumStatus::kInterrupted, "interrupted");
-    const HessianKind first_kind =
-        options_.exact_newton_first ? HessianKind::kExact : HessianKind::kProjectedPsd;
-    potential_.Evaluate(state, support, first_kind, true, &hints_, &e,
-                        /*with_support_samples=*/false);
-    last_exact_ = first_kind == HessianKind::kExact;
-    result.assembly_seconds += e.assembly_seconds;
-    result.contact_seconds += e.contact_seconds;
+    evaluate();
     result.iterations = iteration;
-    result.residual = potential_.ResidualNorm(e.gradient);
-    result.relative_residual = result.residual / (load > 0 ? load : 1.0);
-    result.energy = e.energy;
-    result.contact_vertices = e.contacts.skin_vertices_in_contact();
-    result.contact_springs = e.contacts.springs();
-    result.max_penetration = e.contacts.max_penetration;
-    result.contact_force = e.contacts.TotalForceOnBody();
+    change = CompareActiveSets(previous_skin, e.contacts.skin);
+    result.contacts_entered += change.entered;
+    result.contacts_left += change.left;
+    result.feature_switches += change.switched;
+    previous_skin.contacts.clear();
+    for (const Contact& contact : e.contacts.skin.contacts) {
+      previous_skin.contacts.emplace_back();
+      previous_skin.contacts.back().point = contact.point;
+      previous_skin.contacts.back().anchor.feature = contact.anchor.feature;
+    }
     if (!std::isfinite(result.residual) || !std::isfinite(e.energy)) {
       return finish(EquilibriumStatus::kNonFinite,
                     "the energy or residual is not finite (an element inverted beyond repair, or "
@@ -334,8 +377,17 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                         residual.str() + " N)");
     }
     state = system.layout().Retract(state, found.step * step);
-    if (options_.progress)
-      options_.progress(iteration, result.residual, found.step, result.contact_vertices);
+    if (options_.progress) {
+      NewtonIterationReport report;
+      report.iteration = iteration;
+      report.residual = result.residual;
+      report.step = found.step;
+      report.contact_vertices = result.contact_vertices;
+      report.contacts_entered = change.entered;
+      report.contacts_left = change.left;
+      report.feature_switches = change.switched;
+      options_.progress(report);
+    }
   }
 }
 

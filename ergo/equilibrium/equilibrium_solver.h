@@ -28,6 +28,18 @@
 
 namespace ergo {
 
+// One Newton iteration, as EquilibriumOptions::progress sees it.
+struct NewtonIterationReport {
+  int iteration = 0;
+  double residual = 0;       // N, at the iterate the step started from
+  double step = 0;           // η, the line search's fraction of the Newton step
+  int contact_vertices = 0;  // skin vertices inside the support at that iterate
+  // The contact's active set against the previous iterate: skin vertices that entered or
+  // left the support, and those whose closest feature changed (the piecewise energy then
+  // switches formula, so a Newton model built on the old set is off for them).
+  int contacts_entered = 0, contacts_left = 0, feature_switches = 0;
+};
+
 struct EquilibriumOptions {
   // κ of the area-weighted contact (ergo/contact/surface_contact.h): contact pressure per
   // metre of penetration, Pa/m. Mesh-independent: a spring's k is κ times its vertex area.
@@ -62,8 +74,8 @@ struct EquilibriumOptions {
   // refactorising; factorisation dominates Newton's time (README, Performance).
   bool reuse_factorization = true;
   int max_pcg_iterations = 12;
-  // Called after every Newton iteration (iteration, residual N, step η, contacts).
-  std::function<void(int, double, double, int)> progress;
+  // Called after every Newton iteration.
+  std::function<void(const NewtonIterationReport&)> progress;
   // If set, checked before every Newton iteration: true ends the solve (kInterrupted).
   const std::atomic<bool>* stop = nullptr;
 };
@@ -90,7 +102,10 @@ struct EquilibriumResult {
   int factorizations = 0;      // numeric Cholesky factorisations (regularised retries included)
   int pcg_iterations = 0;      // conjugate-gradient iterations on reused factors
   int line_search_trials = 0;  // energy evaluations of the line searches
-  double residual = 0;         // final ResidualNorm, N
+  // Active-set changes summed over the iterations (NewtonIterationReport); with a start out
+  // of contact, entered − left = contact_vertices.
+  int contacts_entered = 0, contacts_left = 0, feature_switches = 0;
+  double residual = 0;  // final ResidualNorm, N
   double relative_residual = 0;
   double energy = 0;           // J
   int contact_vertices = 0;    // skin vertices inside the support

@@ -15,9 +15,9 @@
 //
 // The 40k body takes minutes to mesh and to solve cold; the whole run takes about 15–25
 // minutes on 2 cores. Diagnostics, set in the environment: ERGO_TRACE_NEWTON=1 prints every
-// Newton iteration (residual N, step η, contact vertices) to stderr; ERGO_NO_REUSE=1
-// refactorises at every Newton iteration (no PCG on an old factor); ERGO_NO_PREDICTOR=1
-// starts the warm solve without the tangent predictor.
+// Newton iteration (residual N, step η, contact vertices, the active set's changes) to stderr;
+// ERGO_NO_REUSE=1 refactorises at every Newton iteration (no PCG on an old factor);
+// ERGO_NO_PREDICTOR=1 starts the warm solve without the tangent predictor.
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -73,10 +73,10 @@ ScaledScene& SceneFor(int body_thousands, int support_thousands) {
   if (std::getenv("ERGO_NO_REUSE")) s.scenario.design.equilibrium.reuse_factorization = false;
   if (std::getenv("ERGO_NO_PREDICTOR")) s.scenario.design.tangent_predictor = false;
   if (std::getenv("ERGO_TRACE_NEWTON")) {
-    s.scenario.design.equilibrium.progress = [](int it, double residual, double step,
-                                                int contacts) {
-      std::fprintf(stderr, "newton %d residual %.3e step %.3g contacts %d\n", it, residual, step,
-                   contacts);
+    s.scenario.design.equilibrium.progress = [](const NewtonIterationReport& r) {
+      std::fprintf(stderr, "newton %d residual %.3e step %.3g contacts %d (+%d −%d, %d switched)\n",
+                   r.iteration, r.residual, r.step, r.contact_vertices, r.contacts_entered,
+                   r.contacts_left, r.feature_switches);
     };
   }
   s.after_cold = std::make_unique<DesignProblem>(s.scenario.MakeProblem());

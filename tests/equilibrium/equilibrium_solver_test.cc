@@ -206,6 +206,43 @@ TEST(Equilibrium, WarmStartAfterATenthOfAMillimetreSupportChangeNeedsFewIteratio
   EXPECT_NEAR(warm.state.centre.y() - cold.state.centre.y(), 1e-4, 1e-6);
 }
 
+// The active-set counts are a bookkeeping identity: from a start out of contact every vertex
+// in contact at the end entered once more than it left, and the per-iteration reports add
+// up to the result's totals. A fine slab (16 x 16 cells under the 3 x 3 cube face) makes the
+// skin cross face and edge regions while it settles.
+TEST(Equilibrium, ActiveSetChangesAddUpToTheFinalContactSet) {
+  const LayeredBody body = CubeBody("tx,tz", Eigen::Vector3d(0, -5, 0));
+  const Support support(MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {16, 1, 16}), "fine slab");
+  EquilibriumOptions options = Options();
+  int entered = 0, left = 0, switched = 0, reports = 0;
+  options.progress = [&](const NewtonIterationReport& r) {
+    EXPECT_EQ(r.iteration, reports++);
+    entered += r.contacts_entered;
+    left += r.contacts_left;
+    switched += r.feature_switches;
+  };
+  EquilibriumSolver solver(body, options);
+  const EquilibriumResult result = solver.Solve(support, TranslatedRestState(body, {0, 0.002, 0}));
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  ASSERT_GT(result.contact_vertices, 0);
+  EXPECT_EQ(result.contacts_entered - result.contacts_left, result.contact_vertices);
+  // The last iterate (the converged one) is counted in the result but takes no step, so it
+  // reports nothing: the reports cover all but its changes.
+  EXPECT_EQ(reports, result.iterations);
+  EXPECT_LE(entered, result.contacts_entered);
+  EXPECT_LE(left, result.contacts_left);
+  EXPECT_LE(switched, result.feature_switches);
+  EXPECT_GT(entered, 0);
+  // Solving again from the converged state: nothing enters beyond the set already there,
+  // nothing leaves, nothing switches.
+  const EquilibriumResult again = solver.Solve(support, result.state);
+  ASSERT_TRUE(again.converged) << again.FullReport();
+  EXPECT_EQ(again.iterations, 0);
+  EXPECT_EQ(again.contacts_entered, result.contact_vertices);
+  EXPECT_EQ(again.contacts_left, 0);
+  EXPECT_EQ(again.feature_switches, 0);
+}
+
 TEST(Equilibrium, AnIterationCapIsReportedNotHidden) {
   const LayeredBody body = CubeBody("tx,tz");
   EquilibriumOptions options = Options();

@@ -13,8 +13,9 @@ TEST(Problems, BumpScenarioRestsOnTheBumpWithTheContactForceEqualToItsWeight) {
   const Scenario scenario = MakeBumpScenario();
   EquilibriumOptions options = scenario.design.equilibrium;
   if (getenv("VERBOSE"))
-    options.progress = [](int it, double r, double eta, int c) {
-      std::cout << "it " << it << " res " << r << " eta " << eta << " contacts " << c << "\n";
+    options.progress = [](const NewtonIterationReport& r) {
+      std::cout << "it " << r.iteration << " res " << r.residual << " eta " << r.step
+                << " contacts " << r.contact_vertices << "\n";
     };
   EquilibriumSolver solver(*scenario.body, options);
   const EquilibriumResult result = solver.Solve(Support(scenario.support), scenario.start);
