@@ -99,14 +99,18 @@ DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& place
 
 double MeanPlacedPhi(const DesignProblem& problem, const Eigen::VectorXd& x,
                      const std::vector<Placement>& placements, const std::atomic<bool>* stop,
-                     EvaluationTiming* timing) {
+                     EvaluationTiming* timing, std::string* failure) {
   const std::vector<DesignEvaluation> placed = EvaluatePlacements(problem, x, placements, stop);
   if (timing)
     for (const DesignEvaluation& e : placed) *timing += e.timing;
+  if (failure) failure->clear();
   double mean = 0;
-  for (const DesignEvaluation& e : placed) {
-    if (!e.ok) return std::numeric_limits<double>::quiet_NaN();
-    mean += e.phi / static_cast<double>(placed.size());
+  for (size_t i = 0; i < placed.size(); ++i) {
+    if (!placed[i].ok) {
+      if (failure) *failure = placements[i].name + ": " + placed[i].message;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    mean += placed[i].phi / static_cast<double>(placed.size());
   }
   return mean;
 }

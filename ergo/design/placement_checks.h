@@ -41,10 +41,12 @@ std::vector<DesignEvaluation> EvaluatePlacements(const DesignProblem& problem,
                                                  const std::atomic<bool>* stop = nullptr);
 
 // The mean φ of x over those placements (the robust objective's value placed afresh); NaN if
-// any of their equilibria fails. Adds their time splits to *timing when given.
+// any of their equilibria fails, and then *failure (when given) says which placement and why
+// ("x+3mm: iteration cap: …"; empty otherwise). Adds their time splits to *timing when given.
 double MeanPlacedPhi(const DesignProblem& problem, const Eigen::VectorXd& x,
                      const std::vector<Placement>& placements,
-                     const std::atomic<bool>* stop = nullptr, EvaluationTiming* timing = nullptr);
+                     const std::atomic<bool>* stop = nullptr, EvaluationTiming* timing = nullptr,
+                     std::string* failure = nullptr);
 
 // Runs task(i) for i in [0, count) on min(count, cores) threads, sharing the cores among
 // them (each thread's OpenMP regions get cores / threads).

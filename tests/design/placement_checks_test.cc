@@ -78,5 +78,27 @@ TEST(Design, APlacedProblemStartsFromTheMovedPose) {
   EXPECT_LT((placed.start().centre - problem.start().centre - placement.shift).norm(), 1e-15);
 }
 
+// A placement without equilibrium makes the mean NaN and says which placement failed and why:
+// "beside" moves the cube 1 m sideways, off the 40 cm slab, so it falls past it.
+TEST(Design, MeanPlacedPhiNamesThePlacementWithoutEquilibrium) {
+  const LayeredBody body = Cube("tx,tz");
+  const TriMesh slab = MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {4, 1, 4});
+  DesignOptions options;
+  options.equilibrium.contact_stiffness = 4e6;
+  const DesignProblem problem(body, slab, RestState(body), options);
+  Placement centred, beside;
+  centred.name = "centred";
+  beside.name = "beside";
+  beside.shift = Eigen::Vector3d(1.0, 0, 0);
+  const Eigen::VectorXd x = problem.InitialDesign();
+  std::string failure = "stale";
+  ASSERT_TRUE(std::isfinite(MeanPlacedPhi(problem, x, {centred}, nullptr, nullptr, &failure)));
+  EXPECT_TRUE(failure.empty()) << failure;
+  const double phi = MeanPlacedPhi(problem, x, {centred, beside}, nullptr, nullptr, &failure);
+  EXPECT_TRUE(std::isnan(phi));
+  EXPECT_EQ(failure.rfind("beside: ", 0), 0u) << failure;
+  EXPECT_NE(failure.find("no contact"), std::string::npos) << failure;
+}
+
 }  // namespace
 }  // namespace ergo

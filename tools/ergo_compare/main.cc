@@ -274,7 +274,12 @@ int Compare() {
       RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
   RoundsProblem rounds_problem;
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
-    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing);
+    std::string failure;
+    const double phi = MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing, &failure);
+    // A design the body finds no equilibrium on afresh is not kept; say why.
+    if (!failure.empty() && !StopOnSignals::stopped())
+      std::cout << "  placed afresh: no equilibrium at " << failure << "\n";
+    return phi;
   };
   const auto fresh_start = std::chrono::steady_clock::now();
   const double phi0 = robust.size() > 1 ? rounds_problem.fresh_score(x0, nullptr) : start.phi;

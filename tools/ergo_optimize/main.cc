@@ -275,7 +275,12 @@ int Run() {
     return std::make_unique<DesignObjective>(path);
   };
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
-    return MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing);
+    std::string failure;
+    const double phi = MeanPlacedPhi(fresh, x, robust, &StopOnSignals::flag(), timing, &failure);
+    // A design the body finds no equilibrium on afresh is not kept; say why.
+    if (!failure.empty() && !StopOnSignals::stopped())
+      std::cout << "  placed afresh: no equilibrium at " << failure << "\n";
+    return phi;
   };
   double phi0_objective = phi0;
   double fresh_score_seconds = first.timing.total_seconds;  // to keep the checks in the budget
