@@ -9,7 +9,7 @@
 #include <ceres/iteration_callback.h>
 #include <glog/logging.h>
 
-#include "ergo/design/design_functions.h"
+#include "solvers/design_scaling.h"
 #include "solvers/run_monitor.h"
 
 namespace ergo {

@@ -8,7 +8,7 @@
 #include <glog/logging.h>
 #include <nlopt.hpp>
 
-#include "ergo/design/design_functions.h"
+#include "solvers/design_scaling.h"
 #include "solvers/run_monitor.h"
 
 namespace ergo {
