@@ -79,6 +79,7 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   EquilibriumOptions equilibrium;
   equilibrium.relative_tolerance = options.relative_tolerance;
   equilibrium.max_iterations = options.max_iterations;
+  equilibrium.stall_iterations = options.stall_iterations;
   equilibrium.stop = &stop;
   equilibrium.progress = [&](const NewtonIterationReport& r) {
     say(Format("Newton %3.0f  residual %.3e N  step %.3g  contact vertices %.0f", r.iteration,

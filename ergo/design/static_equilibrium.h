@@ -35,6 +35,7 @@ struct StaticEquilibriumOptions {
   double gap = 1e-3;                 // m
   double relative_tolerance = 1e-8;  // force residual relative to the load
   int max_iterations = 100;          // Newton iterations per solve
+  int stall_iterations = 5;          // EquilibriumOptions::stall_iterations; 0 = strict only
   // Wall-clock budget for the whole job, seconds; 0 = none. When it runs out the current
   // solve stops (EquilibriumStatus::kInterrupted) and the result says so.
   double max_seconds = 0;

@@ -56,6 +56,8 @@ const char* EquilibriumStatusName(EquilibriumStatus status) {
   switch (status) {
     case EquilibriumStatus::kConverged:
       return "converged";
+    case EquilibriumStatus::kStalled:
+      return "converged (stalled)";
     case EquilibriumStatus::kIterationCap:
       return "iteration cap";
     case EquilibriumStatus::kLineSearchFailure:
@@ -103,6 +105,7 @@ EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumO
                                              options.contact_support_springs}) {
   CHECK_GT(options.relative_tolerance, 0.0);
   CHECK_GE(options.max_iterations, 1);
+  CHECK_GE(options.stall_iterations, 0);
   CHECK_GT(options.free_fall_mass_scale, 0.0);
   cholesky_.Analyze(potential_.system().pattern());
   const Vertices& rest = body.rest().vertices;
@@ -179,6 +182,8 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
   const ReducedSystem& system = potential_.system();
   const double load = body_.TotalLoad().norm();
   const double tolerance = options_.relative_tolerance * (load > 0 ? load : 1.0);
+  const double stalled_tolerance = options_.stalled_relative_tolerance * (load > 0 ? load : 1.0);
+  int iterations_within_stalled = 0;  // consecutive iterates with residual ≤ stalled_tolerance
   // Energy differences below this are round-off (the gravity potential dominates |E|).
   const double energy_scale =
       body_.total_mass() * body_.gravity().norm() * potential_.lever_length() +
@@ -214,7 +219,8 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       result.contact_seconds += e.contact_seconds - before;
     }
     result.status = status;
-    result.converged = status == EquilibriumStatus::kConverged;
+    result.converged =
+        status == EquilibriumStatus::kConverged || status == EquilibriumStatus::kStalled;
     result.message = message;
     result.total_seconds = SecondsSince(begin);
     return result;
@@ -246,6 +252,16 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       if (!unconstrained.empty()) return finish(EquilibriumStatus::kUnconstrained, unconstrained);
     }
     if (result.residual <= tolerance) return finish(EquilibriumStatus::kConverged, "converged");
+    iterations_within_stalled =
+        result.residual <= stalled_tolerance ? iterations_within_stalled + 1 : 0;
+    if (options_.stall_iterations > 0 && iterations_within_stalled >= options_.stall_iterations) {
+      std::ostringstream message;
+      message << "converged to " << result.relative_residual
+              << " of the load (stalled: " << iterations_within_stalled << " iterations within "
+              << options_.stalled_relative_tolerance << ", not " << options_.relative_tolerance
+              << "; " << change.switched << " vertices switched features at the last)";
+      return finish(EquilibriumStatus::kStalled, message.str());
+    }
     if (iteration == options_.max_iterations) {
       return finish(EquilibriumStatus::kIterationCap,
                     "no convergence in " + std::to_string(iteration) + " Newton iterations");

@@ -15,8 +15,8 @@
 // by exact reductions, so the design is the single-process one bit for bit; rank 0 writes.
 //
 //   ergo_population --population=data/shoe_population.json --objective=worst --out=DIR
-//   ergo_population --generate=FILE --scene_flagfile=data/shoe.flags --count=8 \
-//       --vary=shoe_foot_length=0.24:0.28,shoe_modulus_scale=0.7:1.3 \
+//   ergo_population --generate=FILE --scene_flagfile=data/shoe.flags --count=8
+//       --vary=shoe_foot_length=0.24:0.28,shoe_modulus_scale=0.7:1.3
 //       --support_at=shoe_foot_length=high
 #include <algorithm>
 #include <chrono>

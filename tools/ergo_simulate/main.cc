@@ -48,6 +48,10 @@ DEFINE_double(target_penetration, 3e-4, "max penetration the auto stiffness aims
 DEFINE_string(place, "auto", "auto: move the body along the load to --gap above the support; none");
 DEFINE_double(gap, 1e-3, "gap left by --place=auto, m");
 DEFINE_double(tolerance, 1e-8, "convergence: force residual relative to the load");
+DEFINE_int32(stall_iterations, 5,
+             "also accept a residual held below 1e-6 of the load (or --tolerance, if larger) for "
+             "this many Newton iterations in a row, reported as 'converged (stalled)' (a faceted "
+             "support's creases can keep Newton from --tolerance); 0 = only --tolerance");
 DEFINE_int32(max_iterations, 100, "Newton iteration cap");
 DEFINE_int32(threads, 0, "threads for assembly and contact (0 = all cores)");
 DEFINE_bool(progress, true,
@@ -109,6 +113,8 @@ int Run() {
   RequireInRange("target_penetration", FLAGS_target_penetration, 1e-6, 0.02,
                  "metres, e.g. 3e-4 (0.3 mm)");
   RequireInRange("tolerance", FLAGS_tolerance, 1e-14, 1e-2, "e.g. 1e-8");
+  RequireInRange("stall_iterations", static_cast<long>(FLAGS_stall_iterations), 0, 1000,
+                 "e.g. 5; 0 = only --tolerance");
   RequireInRange("threads", static_cast<long>(FLAGS_threads), 0, 1024, "0 = all cores");
   RequireInRange("max_seconds", FLAGS_max_seconds, 0, 1e7, "seconds, 0 = no limit");
   LengthUnit unit;
@@ -139,6 +145,7 @@ int Run() {
 
   StaticEquilibriumOptions options;
   options.relative_tolerance = FLAGS_tolerance;
+  options.stall_iterations = FLAGS_stall_iterations;
   options.max_iterations = FLAGS_max_iterations;
   options.target_penetration = FLAGS_target_penetration;
   options.place = FLAGS_place == "auto";
