@@ -128,7 +128,7 @@ class WalledQuadratic : public Objective {
       : quadratic_(quadratic), side_(quadratic.Minimizer()[0] > 0 ? 1.0 : -1.0), wall_(wall) {}
   int NumParameters() const override { return quadratic_.NumParameters(); }
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override {
-    if (side_ * x[0] <= wall_) return quadratic_.Evaluate(x, with_gradient);
+    if (Allowed(x)) return quadratic_.Evaluate(x, with_gradient);
     ++*failures_;
     ObjectiveValue failed;
     failed.message = "beyond the wall";
@@ -161,8 +161,8 @@ class WalledQuadratic : public Objective {
 // best, counts the failures, and gets at least as low as one exact line search along −∇φ(0)
 // stopped at the wall. (None of them reaches the constrained minimum, ½ (|x*₀| − w)² /
 // (A⁻¹)₀₀: a failure carries no gradient, so nothing tells a method to slide along the wall;
-// measured, they stall there at 64.8–70.5 % below φ(0), one exact line search stopped at the wall
-// reaches 63.2 %.)
+// measured, they stall there at 64.8–70.5 % below φ(0), one exact line search stopped at
+// the wall reaches 63.2 %.)
 TEST(Solvers, EveryOptimizerStepsBackFromFailedEvaluations) {
   const IllConditionedQuadratic quadratic(10, 10, 3);
   const Eigen::VectorXd minimizer = quadratic.Minimizer();
