@@ -1,7 +1,8 @@
-// BodyState: the reduced coordinates y = (u^F, q) of paper §3.3 — displacements of the free
-// tet vertices and the rigid core's pose q = (centre c, rotation R). Attached vertices
-// follow the core: p_a = c + R (X_a − C₀). Rotations are updated multiplicatively,
-// R ← exp([δθ]×) R (DESIGN.md §3).
+// BodyState: the reduced coordinates y = (u^F, q, u^S) of the equilibrium (paper §3.3) —
+// displacements of the body's free tet vertices, the rigid core's pose q = (centre c,
+// rotation R), and, when the body rests on a soft support (paper §4.3), the displacements of
+// that support's free vertices. Attached vertices follow the core: p_a = c + R (X_a − C₀).
+// Rotations are updated multiplicatively, R ← exp([δθ]×) R (DESIGN.md §3).
 #pragma once
 
 #include <Eigen/Core>
@@ -17,6 +18,9 @@ struct BodyState {
   // Σ δθ over all updates: the angle the external torque works through (Eq. 9's linear
   // term). Exact for a single free rotation axis; a path integral otherwise.
   Eigen::Vector3d torque_angle = Eigen::Vector3d::Zero();
+  // u^S: 3·#free displacements of a soft support's free vertices from its rest positions, m,
+  // in ElasticPart::free_vertices() order. Empty: the support at rest (or rigid).
+  Eigen::VectorXd support_displacement;
 };
 
 // The undeformed body at its rest pose.

@@ -15,14 +15,6 @@
 namespace ergo {
 namespace {
 
-double SignedTetVolume(const Vertices& v, const Eigen::RowVector4i& tet) {
-  const Eigen::Vector3d p0 = v.row(tet[0]);
-  return (Eigen::Vector3d(v.row(tet[1])) - p0)
-             .dot(
-                 (Eigen::Vector3d(v.row(tet[2])) - p0).cross(Eigen::Vector3d(v.row(tet[3])) - p0)) /
-         6.0;
-}
-
 // Volume, centroid and second moment ∫ x xᵀ dV (about the origin) of the solid bounded by
 // outward triangles, by the divergence theorem over tets (origin, a, b, c).
 struct SolidMoments {
@@ -96,50 +88,13 @@ TriMesh Skin::RestSurface(const Vertices& positions) const {
 
 LayeredBody LayeredBody::Create(TetMesh rest, std::vector<bool> attached, TissueMaterial material,
                                 const LayeredBodyOptions& options, const std::string& name) {
+  ValidateTetMaterial(rest, material, name, "tissue: 5e3–15e3 Pa");
   const Eigen::Index n = rest.vertices.rows(), tet_count = rest.tets.rows();
-  if (n == 0 || tet_count == 0)
-    throw InputError(name, "", "the tet mesh is empty", "build a body first");
   if (static_cast<Eigen::Index>(attached.size()) != n) {
     throw InputError(name, "",
                      "the attached-vertex flags have " + std::to_string(attached.size()) +
                          " entries for " + std::to_string(n) + " vertices",
                      "give one flag per tet-mesh vertex");
-  }
-  if (material.youngs_modulus.size() != tet_count || material.poisson_ratio.size() != tet_count) {
-    throw InputError(
-        name, "",
-        "material arrays do not have one value per tet (" + std::to_string(tet_count) + " tets)",
-        "give Young's modulus and Poisson's ratio per tet");
-  }
-  for (Eigen::Index t = 0; t < tet_count; ++t) {
-    for (int k = 0; k < 4; ++k) {
-      if (rest.tets(t, k) < 0 || rest.tets(t, k) >= n) {
-        throw InputError(name, "tet " + std::to_string(t), "vertex index out of range",
-                         "repair the tet mesh");
-      }
-    }
-    const double E = material.youngs_modulus[t], nu = material.poisson_ratio[t];
-    if (!(E > 0) || !std::isfinite(E)) {
-      throw InputError(name, "tet " + std::to_string(t),
-                       "Young's modulus " + std::to_string(E) + " Pa is not positive",
-                       "give a positive stiffness (tissue: 5e3–15e3 Pa)");
-    }
-    if (!(nu > -1.0 && nu < 0.5)) {
-      throw InputError(name, "tet " + std::to_string(t),
-                       "Poisson's ratio " + std::to_string(nu) + " is outside (-1, 0.5)",
-                       "use a value such as 0.45 for nearly incompressible tissue");
-    }
-    if (!(SignedTetVolume(rest.vertices, rest.tets.row(t)) > 0)) {
-      throw InputError(name, "tet " + std::to_string(t),
-                       "rest volume is not positive (degenerate or inverted element)",
-                       "re-mesh the body or swap two vertices of inverted tets");
-    }
-  }
-  if (!(material.inversion_threshold > 0 && material.inversion_threshold < 1) ||
-      !(material.compression_resistance >= 0)) {
-    throw InputError(name, "",
-                     "inversion threshold must be in (0,1) and compression resistance >= 0",
-                     "use the defaults 0.1 and 1");
   }
   ValidateCoreLock(options.lock, name + " lock");
 
@@ -169,7 +124,7 @@ LayeredBody LayeredBody::Create(TetMesh rest, std::vector<bool> attached, Tissue
   // Lumped masses: a quarter of each tet's mass on each corner.
   body.vertex_mass_ = Eigen::VectorXd::Zero(n);
   for (Eigen::Index t = 0; t < tet_count; ++t) {
-    const double volume = SignedTetVolume(rest.vertices, rest.tets.row(t));
+    const double volume = TetVolume(rest, t);
     body.layer_volume_ += volume;
     for (int k = 0; k < 4; ++k)
       body.vertex_mass_[rest.tets(t, k)] += options.tissue_density * volume / 4;

@@ -11,17 +11,10 @@
 #include <Eigen/Core>
 
 #include "ergo/body/core_lock.h"
+#include "ergo/body/tissue_material.h"
 #include "ergo/mesh/tri_mesh.h"
 
 namespace ergo {
-
-// Per-tet neo-Hookean tissue parameters (see ergo/material).
-struct TissueMaterial {
-  Eigen::VectorXd youngs_modulus;       // #T, Pa (tissue: 5–15 kPa)
-  Eigen::VectorXd poisson_ratio;        // #T, in (−1, 0.5)
-  double compression_resistance = 1.0;  // dimensionless c of the volume term (DESIGN §3)
-  double inversion_threshold = 0.1;     // principal-stretch clamp ε
-};
 
 struct LayeredBodyOptions {
   double tissue_density = 1050.0;  // kg/m³, lumped onto vertices

@@ -5,9 +5,13 @@
 
 namespace ergo {
 
-ReducedLayout::ReducedLayout(const LayeredBody& body)
+ReducedLayout::ReducedLayout(const LayeredBody& body, Eigen::Index support_size)
     : core_offset_(3 * body.free_vertices().size()),
-      core_components_(body.lock().FreeComponents()) {}
+      core_components_(body.lock().FreeComponents()),
+      support_size_(support_size) {
+  CHECK_GE(support_size, 0);
+  CHECK_EQ(support_size % 3, 0);
+}
 
 Eigen::MatrixXd ReducedLayout::CoreJacobian(const Eigen::Vector3d& h) const {
   // Full B = [I  −[h]×]: ∂p/∂c = I, ∂p/∂θ = −[h]× (δθ × h = −h × δθ).
@@ -49,6 +53,12 @@ BodyState ReducedLayout::Retract(const BodyState& state, const Eigen::VectorXd& 
   next.centre += translation;
   next.rotation = RotationExp(rotation) * state.rotation;
   next.torque_angle += rotation;
+  if (support_size_ > 0) {
+    if (next.support_displacement.size() == 0)
+      next.support_displacement = Eigen::VectorXd::Zero(support_size_);
+    CHECK_EQ(next.support_displacement.size(), support_size_);
+    next.support_displacement += step.tail(support_size_);
+  }
   return next;
 }
 
@@ -60,7 +70,7 @@ Vertices ReducedLayout::VertexVelocity(const LayeredBody& body, const BodyState&
   const Eigen::VectorXi& free = body.free_vertices();
   for (Eigen::Index i = 0; i < free.size(); ++i)
     velocity.row(free[i]) = step.segment<3>(3 * i).transpose();
-  const Eigen::VectorXd core_step = step.tail(core_count());
+  const Eigen::VectorXd core_step = step.segment(core_offset_, core_count());
   for (Eigen::Index a : body.attached_vertices()) {
     const Eigen::Vector3d h = positions.row(a).transpose() - state.centre;
     velocity.row(a) = (CoreJacobian(h) * core_step).transpose();

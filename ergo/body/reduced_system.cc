@@ -43,7 +43,8 @@ int IndexOf(const SparseMatrix& m, int row, int col) {
 
 }  // namespace
 
-ReducedSystem::ReducedSystem(const LayeredBody& body) : body_(body), layout_(body), kernel_(body) {
+ReducedSystem::ReducedSystem(const LayeredBody& body, Eigen::Index support_size)
+    : body_(body), layout_(body, support_size), kernel_(body.rest(), body.material()) {
   BuildPattern();
   Colour();
 }

@@ -6,7 +6,8 @@
 // with p_a = c + exp([δθ]×) h_a, ∂²E/∂δθ² gains Σ_a ½(g_a h_aᵀ + h_a g_aᵀ) − (g_a·h_a) I,
 // g_a = ∂E/∂p_a (DESIGN.md §3); without it the adjoint gradient is wrong whenever the core
 // may rotate. The sparsity pattern (upper triangle, free DOFs first, core DOFs last) is
-// fixed per body: contact against a rigid support only adds 3x3 diagonal blocks.
+// fixed per body: contact against a rigid support only adds blocks within it; a soft
+// support's blocks and the contact's cross blocks are TotalPotential's.
 //
 // Assembly is parallel over elements of one colour at a time (colours share no vertex),
 // so the result is bitwise identical for any number of threads.
@@ -43,8 +44,9 @@ class ReducedSystem {
     bool with_hessian = false;
   };
 
-  // Keeps a reference to `body`, which must outlive the system.
-  explicit ReducedSystem(const LayeredBody& body);
+  // Keeps a reference to `body`, which must outlive the system. `support_size`: a soft
+  // support's DOF count, appended to y (its rows stay empty here: TotalPotential adds them).
+  explicit ReducedSystem(const LayeredBody& body, Eigen::Index support_size = 0);
 
   const LayeredBody& body() const { return body_; }
   const ReducedLayout& layout() const { return layout_; }

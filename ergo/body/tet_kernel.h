@@ -1,21 +1,23 @@
-// Per-tet elastic energy, gradient and Hessian of the body's neo-Hookean tissue, through
-// ergo/material: the one place the body stage calls the material.
+// Per-tet elastic energy, gradient and Hessian of a deformable part's neo-Hookean material
+// (the body's tissue, a soft support's foam), through ergo/material: the one place the body
+// stage calls the material.
 #pragma once
 
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "ergo/body/layered_body.h"
+#include "ergo/body/tissue_material.h"
 #include "ergo/material/neo_hookean.h"
 #include "ergo/material/tet_element.h"
 
 namespace ergo {
 
-// Rest data and material of every tet, precomputed once per body.
+// Rest data and material of every tet, precomputed once per part.
 class TetKernel {
  public:
-  explicit TetKernel(const LayeredBody& body);
+  // `rest` and `material` must have been validated (ValidateTetMaterial).
+  TetKernel(const TetMesh& rest, const TissueMaterial& material);
 
   // Energy of tet t at corner positions x (columns = corners), J.
   double Energy(Eigen::Index t, const TetPositions& x) const {
@@ -34,6 +36,8 @@ class TetKernel {
     EvaluateElement(materials_[t], rest_[t], x, HessianKind::kExact, &energy, gradient, nullptr);
     return energy;
   }
+  const NeoHookean& material(Eigen::Index t) const { return materials_[t]; }
+  const TetRestData& rest(Eigen::Index t) const { return rest_[t]; }
 
  private:
   std::vector<TetRestData> rest_;

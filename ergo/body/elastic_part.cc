@@ -1,0 +1,194 @@
+#include "ergo/body/elastic_part.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <glog/logging.h>
+
+#include "ergo/material/rest_shape_derivative.h"
+#include "ergo/mesh/input_error.h"
+
+namespace ergo {
+namespace {
+
+TetPositions Corners(const Vertices& positions, const Eigen::RowVector4i& tet) {
+  TetPositions x;
+  for (int k = 0; k < 4; ++k) x.col(k) = positions.row(tet[k]).transpose();
+  return x;
+}
+
+int IndexOf(const SparseMatrix& m, int row, int col) {
+  const int* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
+  const int* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
+  const int* it = std::lower_bound(begin, end, row);
+  CHECK(it != end && *it == row) << "entry (" << row << "," << col << ") not in the pattern";
+  return static_cast<int>(it - m.innerIndexPtr());
+}
+
+}  // namespace
+
+ElasticPart ElasticPart::Create(TetMesh rest, std::vector<bool> held, TissueMaterial material,
+                                const ElasticPartOptions& options, const std::string& name) {
+  ValidateTetMaterial(rest, material, name, "foam: 2e4–1.25e5 Pa");
+  const Eigen::Index n = rest.vertices.rows();
+  if (static_cast<Eigen::Index>(held.size()) != n) {
+    throw InputError(name, "",
+                     "the held-vertex flags have " + std::to_string(held.size()) + " entries for " +
+                         std::to_string(n) + " vertices",
+                     "give one flag per tet-mesh vertex");
+  }
+  if (std::none_of(held.begin(), held.end(), [](bool h) { return h; })) {
+    throw InputError(name, "", "no vertex is held: the part would float away",
+                     "hold its base (the bottom face, or a vertex set)");
+  }
+  if (!(options.density >= 0) || !options.gravity.allFinite()) {
+    throw InputError(name, "", "density must be >= 0 and gravity finite",
+                     "use a foam's density (30–80 kg/m³) or 0");
+  }
+  ElasticPart part;
+  part.rest_ = std::move(rest);
+  part.held_ = std::move(held);
+  part.material_ = std::move(material);
+  part.options_ = options;
+  part.free_index_ = Eigen::VectorXi::Constant(n, -1);
+  std::vector<int> free;
+  for (Eigen::Index v = 0; v < n; ++v) {
+    if (part.held_[v]) continue;
+    part.free_index_[v] = static_cast<int>(free.size());
+    free.push_back(static_cast<int>(v));
+  }
+  part.free_vertices_ = Eigen::Map<Eigen::VectorXi>(free.data(), free.size());
+  part.vertex_mass_ = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index t = 0; t < part.rest_.tets.rows(); ++t) {
+    const double mass = options.density * TetVolume(part.rest_, t) / 4;
+    for (int k = 0; k < 4; ++k) part.vertex_mass_[part.rest_.tets(t, k)] += mass;
+  }
+  part.boundary_ = ExtractBoundary(part.rest_);
+  part.kernel_ = std::make_shared<const TetKernel>(part.rest_, part.material_);
+  part.BuildPattern();
+  return part;
+}
+
+void ElasticPart::BuildPattern() {
+  const Tetrahedra& tets = rest_.tets;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    for (int a = 0; a < 4; ++a) {
+      const int fa = free_index_[tets(t, a)];
+      for (int b = 0; b < 4; ++b) {
+        const int fb = free_index_[tets(t, b)];
+        if (fa < 0 || fb < 0 || fb < fa) continue;
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c)
+            if (fa != fb || r <= c) entries.emplace_back(3 * fa + r, 3 * fb + c, 0.0);
+      }
+    }
+  }
+  const auto n = static_cast<int>(size());
+  pattern_.resize(n, n);
+  pattern_.setFromTriplets(entries.begin(), entries.end());
+  pattern_.makeCompressed();
+  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + pattern_.nonZeros(), 0.0);
+  plans_.resize(static_cast<size_t>(tets.rows()));
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    for (int a = 0; a < 4; ++a) {
+      for (int b = 0; b < 4; ++b) {
+        std::array<int, 3>& slot = plans_[t][4 * a + b];
+        slot = {-1, -1, -1};
+        const int fa = free_index_[tets(t, a)], fb = free_index_[tets(t, b)];
+        if (fa < 0 || fb < 0 || fb < fa) continue;
+        for (int c = 0; c < 3; ++c) slot[c] = IndexOf(pattern_, 3 * fa, 3 * fb + c);
+      }
+    }
+  }
+}
+
+Vertices ElasticPart::Positions(const Vertices& base,
+                                const Eigen::VectorXd& free_displacement) const {
+  CHECK_EQ(free_displacement.size(), size());
+  Vertices positions = base;
+  for (Eigen::Index f = 0; f < free_vertices_.size(); ++f)
+    positions.row(free_vertices_[f]) += free_displacement.segment<3>(3 * f).transpose();
+  return positions;
+}
+
+Eigen::VectorXd ElasticPart::FreeComponents(const Vertices& vertex_field) const {
+  Eigen::VectorXd out(size());
+  for (Eigen::Index f = 0; f < free_vertices_.size(); ++f)
+    out.segment<3>(3 * f) = vertex_field.row(free_vertices_[f]).transpose();
+  return out;
+}
+
+double ElasticPart::Energy(const Vertices& positions) const {
+  double energy = 0;
+  for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t)
+    energy += kernel_->Energy(t, Corners(positions, rest_.tets.row(t)));
+  for (Eigen::Index v = 0; v < positions.rows(); ++v)
+    energy -= vertex_mass_[v] * options_.gravity.dot(positions.row(v).transpose());
+  return energy;
+}
+
+void ElasticPart::Evaluate(const Vertices& positions, HessianKind kind, bool with_hessian,
+                           Evaluation* evaluation) const {
+  Evaluation& e = *evaluation;
+  e.with_hessian = with_hessian;
+  e.energy = 0;
+  e.vertex_gradient = Vertices::Zero(positions.rows(), 3);
+  if (with_hessian) {
+    if (e.hessian.nonZeros() != pattern_.nonZeros() || e.hessian.rows() != pattern_.rows())
+      e.hessian = pattern_;
+    std::fill(e.hessian.valuePtr(), e.hessian.valuePtr() + e.hessian.nonZeros(), 0.0);
+  }
+  double* values = with_hessian ? e.hessian.valuePtr() : nullptr;
+  const Tetrahedra& tets = rest_.tets;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    const TetPositions x = Corners(positions, tets.row(t));
+    Vector12d gradient;
+    Matrix12d hessian;
+    e.energy += with_hessian ? kernel_->EnergyGradientHessian(t, x, kind, &gradient, &hessian)
+                             : kernel_->EnergyGradient(t, x, &gradient);
+    for (int k = 0; k < 4; ++k)
+      e.vertex_gradient.row(tets(t, k)) += gradient.segment<3>(3 * k).transpose();
+    if (!with_hessian) continue;
+    for (int a = 0; a < 4; ++a) {
+      for (int b = 0; b < 4; ++b) {
+        const std::array<int, 3>& slot = plans_[t][4 * a + b];
+        if (slot[0] < 0) continue;
+        for (int c = 0; c < 3; ++c) {
+          const int rows = a == b ? c + 1 : 3;  // a diagonal block: its upper triangle
+          for (int r = 0; r < rows; ++r) values[slot[c] + r] += hessian(3 * a + r, 3 * b + c);
+        }
+      }
+    }
+  }
+  for (Eigen::Index v = 0; v < positions.rows(); ++v) {
+    e.energy -= vertex_mass_[v] * options_.gravity.dot(positions.row(v).transpose());
+    e.vertex_gradient.row(v) -= vertex_mass_[v] * options_.gravity.transpose();
+  }
+}
+
+Vertices ElasticPart::RestShapeAdjoint(const Vertices& positions, const Vertices& z) const {
+  CHECK_EQ(z.rows(), rest_.vertices.rows());
+  Vertices out = Vertices::Zero(rest_.vertices.rows(), 3);
+  const Tetrahedra& tets = rest_.tets;
+  for (Eigen::Index t = 0; t < tets.rows(); ++t) {
+    Vector12d z_element = Vector12d::Zero();
+    for (int k = 0; k < 4; ++k)
+      if (!held_[tets(t, k)]) z_element.segment<3>(3 * k) = z.row(tets(t, k)).transpose();
+    if (z_element.squaredNorm() == 0) continue;
+    const TetPositions rest = Corners(rest_.vertices, tets.row(t));
+    const TetPositions x = Corners(positions, tets.row(t));
+    Vector12d change =
+        ElementForceRestJacobian(kernel_->material(t), rest, x).transpose() * z_element;
+    if (options_.density > 0) {
+      // The weight −m_i g of each corner holds ρ V/4: its change through dV/dX.
+      double z_dot_g = 0;
+      for (int k = 0; k < 4; ++k) z_dot_g += z_element.segment<3>(3 * k).dot(options_.gravity);
+      change -= options_.density / 4 * z_dot_g * TetVolumeRestGradient(rest);
+    }
+    for (int k = 0; k < 4; ++k) out.row(tets(t, k)) += change.segment<3>(3 * k).transpose();
+  }
+  return out;
+}
+
+}  // namespace ergo
