@@ -1,9 +1,11 @@
 #include "ergo/body/elastic_part.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include <glog/logging.h>
+#include <Eigen/LU>
 
 #include "ergo/material/rest_shape_derivative.h"
 #include "ergo/mesh/input_error.h"
@@ -165,6 +167,28 @@ void ElasticPart::Evaluate(const Vertices& positions, HessianKind kind, bool wit
     e.energy -= vertex_mass_[v] * options_.gravity.dot(positions.row(v).transpose());
     e.vertex_gradient.row(v) -= vertex_mass_[v] * options_.gravity.transpose();
   }
+}
+
+Eigen::VectorXd ElasticPart::VonMisesStress(const Vertices& positions) const {
+  Eigen::VectorXd out(rest_.tets.rows());
+  for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t) {
+    const Eigen::Matrix3d f =
+        DeformationGradient(kernel_->rest(t), Corners(positions, rest_.tets.row(t)));
+    const double j = f.determinant();
+    const Eigen::Matrix3d sigma = kernel_->material(t).FirstPiola(f) * f.transpose() / j;
+    const Eigen::Matrix3d deviator = sigma - sigma.trace() / 3 * Eigen::Matrix3d::Identity();
+    out[t] = std::sqrt(1.5 * deviator.squaredNorm());
+  }
+  return out;
+}
+
+Eigen::VectorXd ElasticPart::VolumeChange(const Vertices& positions) const {
+  Eigen::VectorXd out(rest_.tets.rows());
+  for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t)
+    out[t] =
+        DeformationGradient(kernel_->rest(t), Corners(positions, rest_.tets.row(t))).determinant() -
+        1;
+  return out;
 }
 
 Vertices ElasticPart::RestShapeAdjoint(const Vertices& positions, const Vertices& z) const {

@@ -70,6 +70,11 @@ class ElasticPart {
   void Evaluate(const Vertices& positions, HessianKind kind, bool with_hessian,
                 Evaluation* evaluation) const;
 
+  // Per tet at `positions`: the von Mises equivalent of the Cauchy stress σ = P Fᵀ / det F,
+  // Pa, and the volume change det F − 1 (for pictures of a support's stress and strain).
+  Eigen::VectorXd VonMisesStress(const Vertices& positions) const;
+  Eigen::VectorXd VolumeChange(const Vertices& positions) const;
+
   // The rest-shape derivative of the residual contracted with an adjoint field:
   // Σ_e (∂f_e/∂X_e)ᵀ z_e, plus the weight's change through the lumped masses. `z` is per
   // vertex (#V x 3; only free rows matter — held vertices have no residual). #V x 3, N.

@@ -158,7 +158,8 @@ struct Support::Impl {
   std::vector<Eigen::Vector3d> face_normal;    // unit (zero for a degenerate triangle)
   std::vector<Eigen::Vector3d> edge_normal;    // 3f + c: sum of the two unit face normals
   std::vector<Eigen::Vector3d> vertex_normal;  // angle-weighted sum (Bærentzen & Aanæs 2005)
-  Eigen::VectorXd vertex_area;  // barycentric, m²
+  Eigen::VectorXd vertex_area;                 // barycentric, m²
+  bool areas_pinned = false;                   // vertex_area kept from the shape PinVertexAreas saw
   std::uint64_t shape = 0;
   // Triangle id -> its primitive in the tree: the hint is read from the copy the descent
   // will touch anyway (one cache line instead of an index row plus three vertex rows).
@@ -198,13 +199,14 @@ struct Support::Impl {
     CollectPrimitives(*tree.root_node(), tree.size());
 
     face_normal.assign(nf, Eigen::Vector3d::Zero());
-    vertex_area = Eigen::VectorXd::Zero(mesh.vertices.rows());
+    if (!areas_pinned) vertex_area = Eigen::VectorXd::Zero(mesh.vertices.rows());
     for (int f = 0; f < nf; ++f) {
       const auto& x = records[f].x;
       const Eigen::Vector3d n = (x[1] - x[0]).cross(x[2] - x[0]);
       const double length = n.norm();
       if (length > 0) face_normal[f] = n / length;
-      for (int c = 0; c < 3; ++c) vertex_area[mesh.triangles(f, c)] += length / 6;
+      if (!areas_pinned)
+        for (int c = 0; c < 3; ++c) vertex_area[mesh.triangles(f, c)] += length / 6;
     }
     edge_normal.resize(3 * nf);
     for (int f = 0; f < nf; ++f)
@@ -295,6 +297,8 @@ Support::Support(const Support& other) : impl_(std::make_unique<Impl>()) {
   impl_->mesh = other.impl_->mesh;
   impl_->tree.do_not_accelerate_distance_queries();
   impl_->neighbour = other.impl_->neighbour;
+  impl_->areas_pinned = other.impl_->areas_pinned;
+  impl_->vertex_area = other.impl_->vertex_area;
   impl_->Build();
 }
 
@@ -304,6 +308,7 @@ Support& Support::operator=(Support&&) noexcept = default;
 
 const TriMesh& Support::mesh() const { return impl_->mesh; }
 const Eigen::VectorXd& Support::vertex_areas() const { return impl_->vertex_area; }
+void Support::PinVertexAreas() { impl_->areas_pinned = true; }
 std::uint64_t Support::shape() const { return impl_->shape; }
 bool Support::InBoundingBox(const Eigen::Vector3d& p) const { return impl_->StrictlyInsideBox(p); }
 

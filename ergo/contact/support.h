@@ -50,6 +50,10 @@ class Support {
   // Barycentric area of every vertex (a third of each incident triangle's), m², at the
   // current shape.
   const Eigen::VectorXd& vertex_areas() const;
+  // Keeps vertex_areas() at the current shape through later UpdateVertices: a soft support's
+  // contact quadrature is then over its rest areas (Lagrangian, like the skin's), so the
+  // springs' stiffness does not vary with its deformation.
+  void PinVertexAreas();
   // Identifies the current shape: changes with every UpdateVertices (as SupportPoint::shape).
   std::uint64_t shape() const;
   // True iff p lies strictly inside the axis-aligned bounding box of S: a point outside it

@@ -45,7 +45,7 @@ DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
       start_(start),
       last_state_(start),
       counters_(std::make_shared<DesignCounters>()) {
-  adjoint_cholesky_.Analyze(solver_.potential().system().pattern());
+  adjoint_cholesky_.Analyze(solver_.potential().system().pattern());  // rigid: fixed pattern
 }
 
 DesignProblem::DesignProblem(const DesignProblem& other)
@@ -121,9 +121,9 @@ BodyState DesignProblem::TangentPrediction(const Eigen::VectorXd& x) const {
       -potential.system().ReduceVertexGradient(last_state_, e.positions, change);
   if (!(rhs.squaredNorm() > 0)) return last_state_;
   const PcgResult cg =
-      PreconditionedConjugateGradient(e.body.hessian, solver_.factor(), rhs, 1e-6, 20);
+      PreconditionedConjugateGradient(e.hessian(), solver_.factor(), rhs, 1e-6, 20);
   if (!cg.converged || !cg.x.allFinite()) return last_state_;
-  const BodyState predicted = potential.system().layout().Retract(last_state_, cg.x);
+  const BodyState predicted = potential.Retract(last_state_, cg.x);
   const double predicted_energy = potential.Energy(predicted, support_);
   const double warm_energy = potential.Energy(last_state_, support_);
   return std::isfinite(predicted_energy) && predicted_energy < warm_energy ? predicted
@@ -262,12 +262,12 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       const SparseCholesky& newton_factor = solver_.factor();
       if (newton_factor.factorized()) {
         const PcgResult cg =
-            PreconditionedConjugateGradient(e.body.hessian, newton_factor, rhs, 1e-12, 30);
+            PreconditionedConjugateGradient(e.hessian(), newton_factor, rhs, 1e-12, 30);
         timing.adjoint_pcg_iterations += cg.iterations;
         if (cg.converged) z = cg.x;
       }
       if (z.size() == 0) {
-        const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.body.hessian);
+        const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.hessian());
         ++timing.adjoint_factorizations;
         if (!factor.ok) {
           timing.adjoint_seconds += SecondsSince(mark);

@@ -66,6 +66,20 @@ void WriteSupportVtu(const std::string& path, const TriMesh& support,
   WriteVtu(path, support, fields, encoding);
 }
 
+void WriteSoftSupportVtu(const std::string& path, const ElasticPart& part,
+                         const Vertices& positions, VtuEncoding encoding) {
+  const Eigen::Index n = positions.rows();
+  Eigen::VectorXd held(n);
+  for (Eigen::Index v = 0; v < n; ++v) held[v] = part.held()[v] ? 1.0 : 0.0;
+  VtuFields fields;
+  fields.point_scalars = {{"held", held}};
+  fields.point_vectors = {{"displacement_m", positions - part.rest().vertices}};
+  fields.cell_scalars = {{"von_mises_stress_Pa", part.VonMisesStress(positions)},
+                         {"volume_change", part.VolumeChange(positions)},
+                         {"youngs_modulus_Pa", part.material().youngs_modulus}};
+  WriteVtu(path, TetMesh{positions, part.rest().tets}, fields, encoding);
+}
+
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
                         const ContactPressures& pressures, double contact_stiffness) {
   const PressureStatistics human =

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ergo/body/body_state.h"
+#include "ergo/body/elastic_part.h"
 #include "ergo/design/contact_pressures.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/json.h"
@@ -27,6 +28,11 @@ void WriteDeformedBodyVtu(const std::string& path, const LayeredBody& body, cons
 void WriteSupportVtu(const std::string& path, const TriMesh& support,
                      const ContactPressures& pressures, const Vertices& initial,
                      VtuEncoding encoding = VtuEncoding::kBinary);
+
+// Writes a soft support's deformed tet mesh: point fields displacement_m, held; cell fields
+// von_mises_stress_Pa (Cauchy), volume_change (det F − 1), youngs_modulus_Pa.
+void WriteSoftSupportVtu(const std::string& path, const ElasticPart& part,
+                         const Vertices& positions, VtuEncoding encoding = VtuEncoding::kBinary);
 
 // The summary of an equilibrium: converged, status, reason, iterations, residual_N,
 // contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,

@@ -64,6 +64,12 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   };
 
   const Support support(support_mesh, source);
+  if (options.soft_support &&
+      (options.soft_support->boundary().surface.vertices.rows() != support_mesh.vertices.rows() ||
+       options.soft_support->boundary().surface.triangles != support_mesh.triangles)) {
+    throw InputError(source, "", "the soft support's boundary is not this support mesh",
+                     "pass the soft part's boundary surface as the support");
+  }
   StaticEquilibrium solved;
   // The stop flag the solver polls: the caller's, or the clock running out.
   std::atomic<bool> stop{false};
@@ -80,6 +86,7 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   equilibrium.relative_tolerance = options.relative_tolerance;
   equilibrium.max_iterations = options.max_iterations;
   equilibrium.stall_iterations = options.stall_iterations;
+  equilibrium.contact_support_springs = options.two_way_contact;
   equilibrium.stop = &stop;
   equilibrium.progress = [&](const NewtonIterationReport& r) {
     say(Format("Newton %3.0f  residual %.3e N  step %.3g  contact vertices %.0f", r.iteration,
@@ -109,7 +116,7 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
     start = placed.state;
   }
 
-  EquilibriumSolver solver(body, equilibrium);
+  EquilibriumSolver solver(body, equilibrium, options.soft_support);
   if (calibrate) {
     CalibrationOptions calibration_options;
     int step = 0;
@@ -131,7 +138,9 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
 
   // Pressures from the very springs of the final state (the solver's last evaluation).
   const ContactPressureEvaluator evaluator(body, support_mesh, PressureCostOptions());
-  solved.pressures = evaluator.Evaluate(solver.last_evaluation().contacts, support.vertex_areas());
+  // A soft support's contact quadrature is over its rest areas (TotalPotential).
+  solved.pressures = evaluator.Evaluate(solver.last_evaluation().contacts,
+                                        solver.potential().ContactSurface(support).vertex_areas());
   solved.summary =
       EquilibriumSummary(body, solved.result, solved.pressures, solved.contact_stiffness);
   if (solved.calibration) {
@@ -149,6 +158,15 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   solved.summary["ok"] = solved.ok();
   solved.summary["message"] = solved.message();
   solved.summary["out_of_time"] = solved.out_of_time;
+  if (options.soft_support) {
+    const TotalPotential::Evaluation& e = solver.last_evaluation();
+    const Vertices moved = e.support_positions - options.soft_support->rest().vertices;
+    Json soft = Json::object();
+    soft["vertices"] = static_cast<long long>(options.soft_support->rest().vertices.rows());
+    soft["tets"] = static_cast<long long>(options.soft_support->rest().tets.rows());
+    soft["max_displacement_m"] = moved.rows() > 0 ? moved.rowwise().norm().maxCoeff() : 0.0;
+    solved.summary["soft_support"] = soft;
+  }
   return solved;
 }
 

@@ -13,9 +13,11 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
+#include "ergo/body/elastic_part.h"
 #include "ergo/body/layered_body.h"
 #include "ergo/contact/stiffness_calibration.h"
 #include "ergo/design/contact_pressures.h"
@@ -36,6 +38,9 @@ struct StaticEquilibriumOptions {
   double relative_tolerance = 1e-8;  // force residual relative to the load
   int max_iterations = 100;          // Newton iterations per solve
   int stall_iterations = 5;          // EquilibriumOptions::stall_iterations; 0 = strict only
+  // EquilibriumOptions::contact_support_springs: the support's springs push too (always so
+  // on a soft support).
+  bool two_way_contact = false;
   // Wall-clock budget for the whole job, seconds; 0 = none. When it runs out the current
   // solve stops (EquilibriumStatus::kInterrupted) and the result says so.
   double max_seconds = 0;
@@ -44,6 +49,9 @@ struct StaticEquilibriumOptions {
   std::function<void(const std::string& line)> progress;
   // If set, checked before every Newton iteration: true stops (e.g. Ctrl-C).
   const std::atomic<bool>* stop = nullptr;
+  // The support as a soft part (paper §4.3; null: rigid). Its boundary at rest must be the
+  // `support_mesh` passed along (ElasticPart::boundary().surface), the contact surface.
+  std::shared_ptr<const ElasticPart> soft_support;
 };
 
 struct StaticEquilibrium {

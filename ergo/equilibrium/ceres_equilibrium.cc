@@ -35,6 +35,11 @@ BodyState EquilibriumFunction::StateAt(const double* parameters) const {
   }
   state.rotation = RotationExp(theta) * base_.rotation;
   state.torque_angle = base_.torque_angle + theta;
+  if (layout.support_size() > 0) {
+    if (state.support_displacement.size() == 0)
+      state.support_displacement = Eigen::VectorXd::Zero(layout.support_size());
+    state.support_displacement += x.tail(layout.support_size());
+  }
   return state;
 }
 

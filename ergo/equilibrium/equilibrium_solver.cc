@@ -89,7 +89,8 @@ std::string EquilibriumResult::FullReport() const {
   out << BriefReport() << "\n"
       << "  energy " << energy << " J, contact force (" << contact_force.transpose() << ") N\n"
       << "  linear algebra: " << factorizations << " factorisations, " << pcg_iterations
-      << " PCG iterations on reused factors, " << line_search_trials << " line-search trials\n"
+      << " PCG iterations on reused factors, " << line_search_trials << " line-search trials"
+      << (analyses > 0 ? ", " + std::to_string(analyses) + " symbolic analyses" : "") << "\n"
       << "  active set: " << contacts_entered << " entered, " << contacts_left << " left, "
       << feature_switches << " feature switches\n"
       << "  time: assembly " << assembly_seconds << " s, contact " << contact_seconds
@@ -98,16 +99,21 @@ std::string EquilibriumResult::FullReport() const {
   return out.str();
 }
 
-EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options)
+EquilibriumSolver::EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options,
+                                     std::shared_ptr<const ElasticPart> soft_support)
     : body_(body),
       options_(options),
-      potential_(body, SurfaceContactOptions{options.contact_stiffness, options.contact_skin_share,
-                                             options.contact_support_springs}) {
+      potential_(body,
+                 SurfaceContactOptions{options.contact_stiffness, options.contact_skin_share,
+                                       options.contact_support_springs},
+                 std::move(soft_support)) {
   CHECK_GT(options.relative_tolerance, 0.0);
   CHECK_GE(options.max_iterations, 1);
   CHECK_GE(options.stall_iterations, 0);
   CHECK_GT(options.free_fall_mass_scale, 0.0);
-  cholesky_.Analyze(potential_.system().pattern());
+  // A rigid support's pattern is fixed: analyse it once here. A soft support's changes with
+  // the contact set and is analysed at its first factorisation (AnalyzeIfChanged).
+  if (!potential_.soft_support()) cholesky_.Analyze(potential_.system().pattern());
   const Vertices& rest = body.rest().vertices;
   body_size_ = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
 }
@@ -116,18 +122,16 @@ FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& st
                                                              const Vertices& positions,
                                                              bool free_fall, SparseMatrix* hessian,
                                                              int* factorizations) {
-  const ReducedSystem& system = potential_.system();
-  if (free_fall) system.AddScaledMass(options_.free_fall_mass_scale, state, positions, hessian);
+  if (free_fall) potential_.AddScaledMass(options_.free_fall_mass_scale, state, positions, hessian);
+  if (cholesky_.AnalyzeIfChanged(*hessian)) ++analyses_;
   FactorizationStatus factor = cholesky_.Factorize(*hessian);
   ++*factorizations;
   if (factor.ok) return factor;
   // Singular (e.g. a rotation not yet resisted): regularise with a growing multiple of M.
-  SparseMatrix mass = system.pattern();
-  system.AddScaledMass(1.0, state, positions, &mass);
-  double shift = 1e-10 * DiagonalSum(*hessian) / DiagonalSum(mass);
+  double shift = 1e-10 * DiagonalSum(*hessian) / DiagonalSum(potential_.Mass(state, positions));
   for (int attempt = 0; attempt < 10 && !factor.ok; ++attempt, shift *= 100) {
     SparseMatrix shifted = *hessian;
-    system.AddScaledMass(shift, state, positions, &shifted);
+    potential_.AddScaledMass(shift, state, positions, &shifted);
     factor = cholesky_.Factorize(shifted);
     ++*factorizations;
   }
@@ -176,10 +180,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
   EquilibriumResult result;
   result.state = start;
   BodyState& state = result.state;
+  const int analyses_at_start = analyses_;
   const Eigen::Index vertex_count = body_.rest().vertices.rows();
   if (static_cast<Eigen::Index>(hints_.size()) != vertex_count)
     hints_.assign(vertex_count, SupportPoint());
-  const ReducedSystem& system = potential_.system();
   const double load = body_.TotalLoad().norm();
   const double tolerance = options_.relative_tolerance * (load > 0 ? load : 1.0);
   const double stalled_tolerance = options_.stalled_relative_tolerance * (load > 0 ? load : 1.0);
@@ -221,6 +225,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     result.status = status;
     result.converged =
         status == EquilibriumStatus::kConverged || status == EquilibriumStatus::kStalled;
+    result.analyses = analyses_ - analyses_at_start;
     result.message = message;
     result.total_seconds = SecondsSince(begin);
     return result;
@@ -281,10 +286,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     if (options_.reuse_factorization && cholesky_.factorized() &&
         first_kind == HessianKind::kExact) {
       SparseMatrix with_mass;
-      const SparseMatrix* newton = &e.body.hessian;
+      const SparseMatrix* newton = &e.hessian();
       if (!in_contact) {
-        with_mass = e.body.hessian;
-        system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &with_mass);
+        with_mass = e.hessian();
+        potential_.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &with_mass);
         newton = &with_mass;
       }
       // Forcing term ∝ the relative residual: superlinear convergence of the inexact Newton.
@@ -299,9 +304,10 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       mark = Clock::now();
       bool exact_ok = false;
       if (first_kind == HessianKind::kExact) {
-        SparseMatrix exact = e.body.hessian;
+        SparseMatrix exact = e.hessian();
         if (!in_contact)
-          system.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &exact);
+          potential_.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &exact);
+        if (cholesky_.AnalyzeIfChanged(exact)) ++analyses_;
         exact_ok = cholesky_.Factorize(exact).ok;
         ++result.factorizations;
       }
@@ -314,12 +320,12 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                               /*with_support_samples=*/false);
           result.assembly_seconds += projected.assembly_seconds;
           result.contact_seconds += projected.contact_seconds;
-          e.body.hessian.swap(projected.body.hessian);
+          e.hessian().swap(projected.hessian());
           last_exact_ = false;
         }
         mark = Clock::now();
         const FactorizationStatus factor = FactorizeNewtonMatrix(
-            state, e.positions, !in_contact, &e.body.hessian, &result.factorizations);
+            state, e.positions, !in_contact, &e.hessian(), &result.factorizations);
         result.factorization_seconds += SecondsSince(mark);
         if (!factor.ok) {
           return finish(EquilibriumStatus::kNonFinite,
@@ -332,8 +338,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     }
     // Shorten steps that would move a vertex farther than the cap (nearly free modes).
     const double cap = options_.max_step_fraction * body_size_;
-    const double largest =
-        system.layout().VertexVelocity(body_, state, e.positions, step).rowwise().norm().maxCoeff();
+    const double largest = potential_.LargestMove(state, e.positions, step);
     if (in_contact && largest > cap) step *= cap / largest;
     double free_fall_max_step = GoldenSectionOptions().max_step;
     if (!in_contact) {
@@ -342,16 +347,13 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
       // plus a thousandth of the body's size to land in contact.
       const Clock::time_point start_clearance = Clock::now();
       double clearance = std::numeric_limits<double>::infinity();
+      const Support& surface = potential_.ContactSurface(support);
       for (Eigen::Index l = 0; l < body_.skin().vertices.size(); ++l)
         clearance = std::min(
             clearance,
-            std::sqrt(support.ClosestPoint(e.positions.row(body_.skin().vertices[l]).transpose())
+            std::sqrt(surface.ClosestPoint(e.positions.row(body_.skin().vertices[l]).transpose())
                           .squared_distance));
-      const double move = system.layout()
-                              .VertexVelocity(body_, state, e.positions, step)
-                              .rowwise()
-                              .norm()
-                              .maxCoeff();
+      const double move = potential_.LargestMove(state, e.positions, step);
       clearance += 1e-3 * body_size_;
       result.contact_seconds += SecondsSince(start_clearance);
       if (move > 0 && std::isfinite(clearance)) {
@@ -373,8 +375,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     const Clock::time_point start_search = Clock::now();
     const double energy0 = e.energy;
     auto phi = [&](double eta) {
-      return potential_.Energy(system.layout().Retract(state, eta * step), support, &hints_) -
-             energy0;
+      return potential_.Energy(potential_.Retract(state, eta * step), support, &hints_) - energy0;
     };
     GoldenSectionOptions search;
     search.expand = !in_contact;
@@ -392,7 +393,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
                     "no step length along the Newton direction lowered the energy (residual " +
                         residual.str() + " N)");
     }
-    state = system.layout().Retract(state, found.step * step);
+    state = potential_.Retract(state, found.step * step);
     if (options_.progress) {
       NewtonIterationReport report;
       report.iteration = iteration;

@@ -1,9 +1,10 @@
-// EquilibriumSolver: the static contact equilibrium of a layered body on a rigid support
-// (paper §3.3–3.4): Newton–Raphson on the reduced coordinates y = (u^F, q) with K̂ (Eq. 7)
-// factorised by CHOLMOD (symbolic analysis once per body, numeric refactorisation per
-// step), a golden-section line search on the energy of Eq. 9 with collision detection at
-// every trial point, and K̂ + αM while no vertex touches the support. Converges on the force
-// residual relative to the load (weight + external force).
+// EquilibriumSolver: the static contact equilibrium of a layered body on a rigid or soft
+// support (paper §3.3–3.4, §4.3): Newton–Raphson on the reduced coordinates y = (u^F, q[, u^S])
+// with K̂ (Eq. 7) factorised by CHOLMOD (symbolic analysis once per body and whenever a soft
+// support's contact pattern changes, numeric refactorisation per step), a golden-section
+// line search on the energy of Eq. 9 with collision detection at every trial point, and K̂ + αM
+// while no vertex touches the support. Converges on the force residual relative to the load (weight
+// + external force).
 //
 // Newton matrix: the exact K̂ when it is positive definite (quadratic convergence near a
 // stable equilibrium), otherwise K̂ with every element block projected to PSD. The
@@ -18,6 +19,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -105,10 +107,14 @@ struct EquilibriumResult {
   BodyState state;
   bool converged = false;  // kConverged or kStalled
   EquilibriumStatus status = EquilibriumStatus::kIterationCap;
-  std::string message;         // why it stopped, in words
-  int iterations = 0;          // Newton iterations
-  int projected_steps = 0;     // iterations that fell back to the PSD-projected K̂
-  int factorizations = 0;      // numeric Cholesky factorisations (regularised retries included)
+  std::string message;      // why it stopped, in words
+  int iterations = 0;       // Newton iterations
+  int projected_steps = 0;  // iterations that fell back to the PSD-projected K̂
+  int factorizations = 0;   // numeric Cholesky factorisations (regularised retries included)
+  // Symbolic analyses: none for a rigid support (done once per body, in the constructor); with
+  // a soft support, one whenever the contact's cross blocks changed K̂'s pattern. Their time
+  // is in factorization_seconds.
+  int analyses = 0;
   int pcg_iterations = 0;      // conjugate-gradient iterations on reused factors
   int line_search_trials = 0;  // energy evaluations of the line searches
   // Active-set changes summed over the iterations (NewtonIterationReport); with a start out
@@ -134,8 +140,12 @@ struct EquilibriumResult {
 
 class EquilibriumSolver {
  public:
-  // Keeps a reference to `body`. Analyses the Hessian pattern once (CHOLMOD symbolic).
-  EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options);
+  // Keeps a reference to `body`. Analyses the Hessian pattern once (CHOLMOD symbolic) for a
+  // rigid support. `soft_support`: the support as a deformable part (TotalPotential), whose
+  // K̂ pattern follows the contact set and is re-analysed when it changes; Solve then takes
+  // its boundary at rest (SoftSupportSurface) and returns its displacements in the state.
+  EquilibriumSolver(const LayeredBody& body, const EquilibriumOptions& options,
+                    std::shared_ptr<const ElasticPart> soft_support = nullptr);
 
   // Solves from `start` (warm start: any earlier state, even for another support shape).
   EquilibriumResult Solve(const Support& support, const BodyState& start);
@@ -175,6 +185,7 @@ class EquilibriumSolver {
   std::vector<SupportPoint> hints_;
   TotalPotential::Evaluation last_;
   bool last_exact_ = false;
+  int analyses_ = 0;      // symbolic analyses so far (EquilibriumResult::analyses)
   double body_size_ = 1;  // bounding-box diagonal of the rest body, m
 };
 

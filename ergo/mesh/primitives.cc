@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <utility>
 #include <vector>
@@ -166,23 +167,36 @@ TetMesh MakeTetGrid(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                     const Eigen::Vector3i& cells) {
   CHECK((hi.array() > lo.array()).all()) << "grid must have positive extent";
   CHECK((cells.array() >= 1).all());
-  const int nx = cells[0] + 1, ny = cells[1] + 1, nz = cells[2] + 1;
+  std::array<std::vector<double>, 3> lines;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int i = 0; i <= cells[axis]; ++i)
+      lines[axis].push_back(lo[axis] + (hi[axis] - lo[axis]) * i / cells[axis]);
+  return MakeRectilinearTetGrid(lines[0], lines[1], lines[2]);
+}
+
+TetMesh MakeRectilinearTetGrid(const std::vector<double>& xs, const std::vector<double>& ys,
+                               const std::vector<double>& zs) {
+  CHECK(xs.size() >= 2 && ys.size() >= 2 && zs.size() >= 2) << "a grid needs two lines per axis";
+  for (const std::vector<double>* axis : {&xs, &ys, &zs})
+    CHECK(std::is_sorted(axis->begin(), axis->end(), std::less_equal<double>()) &&
+          std::adjacent_find(axis->begin(), axis->end()) == axis->end())
+        << "grid lines must increase strictly";
+  const int nx = static_cast<int>(xs.size()), ny = static_cast<int>(ys.size()),
+            nz = static_cast<int>(zs.size());
   TetMesh mesh;
   mesh.vertices.resize(static_cast<Eigen::Index>(nx) * ny * nz, 3);
   auto id = [&](int i, int j, int k) { return (k * ny + j) * nx + i; };
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-        mesh.vertices.row(id(i, j, k)) << lo[0] + (hi[0] - lo[0]) * i / cells[0],
-            lo[1] + (hi[1] - lo[1]) * j / cells[1], lo[2] + (hi[2] - lo[2]) * k / cells[2];
+      for (int i = 0; i < nx; ++i) mesh.vertices.row(id(i, j, k)) << xs[i], ys[j], zs[k];
   // The six monotone lattice paths from corner 000 to corner 111 of each cube.
   const std::array<std::array<int, 3>, 6> orders = {
       {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
   std::vector<std::array<int, 4>> tets;
-  tets.reserve(static_cast<size_t>(cells.prod()) * 6);
-  for (int k = 0; k < cells[2]; ++k) {
-    for (int j = 0; j < cells[1]; ++j) {
-      for (int i = 0; i < cells[0]; ++i) {
+  tets.reserve(static_cast<size_t>(nx - 1) * (ny - 1) * (nz - 1) * 6);
+  for (int k = 0; k + 1 < nz; ++k) {
+    for (int j = 0; j + 1 < ny; ++j) {
+      for (int i = 0; i + 1 < nx; ++i) {
         for (const auto& order : orders) {
           std::array<int, 3> at = {i, j, k};
           std::array<int, 4> tet;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -35,5 +36,10 @@ TriMesh MakeTorus(double major, double minor, int major_segments, int minor_segm
 // tetrahedra along its main diagonal (Kuhn triangulation, conforming across cells).
 TetMesh MakeTetGrid(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                     const Eigen::Vector3i& cells);
+
+// The same on a rectilinear grid with the given (strictly increasing) lines per axis:
+// graded meshes, fine where contact happens and coarse away from it.
+TetMesh MakeRectilinearTetGrid(const std::vector<double>& xs, const std::vector<double>& ys,
+                               const std::vector<double>& zs);
 
 }  // namespace ergo

@@ -1,5 +1,6 @@
 #include "ergo/mesh/sparse_cholesky.h"
 
+#include <algorithm>
 #include <string>
 
 #include <cholmod.h>
@@ -77,6 +78,8 @@ SparseCholesky& SparseCholesky::operator=(const SparseCholesky& other) {
   rows_ = other.rows_;
   nonzeros_ = other.nonzeros_;
   factorized_ = other.factorized_;
+  outer_ = other.outer_;
+  inner_ = other.inner_;
   return *this;
 }
 
@@ -89,6 +92,19 @@ void SparseCholesky::Analyze(const Matrix& matrix) {
   rows_ = matrix.rows();
   nonzeros_ = matrix.nonZeros();
   factorized_ = false;
+  CHECK(matrix.isCompressed());
+  outer_.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + matrix.outerSize() + 1);
+  inner_.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
+}
+
+bool SparseCholesky::AnalyzeIfChanged(const Matrix& matrix) {
+  CHECK(matrix.isCompressed());
+  const bool same = impl_->factor && matrix.rows() == rows_ && matrix.nonZeros() == nonzeros_ &&
+                    std::equal(outer_.begin(), outer_.end(), matrix.outerIndexPtr()) &&
+                    std::equal(inner_.begin(), inner_.end(), matrix.innerIndexPtr());
+  if (same) return false;
+  Analyze(matrix);
+  return true;
 }
 
 FactorizationStatus SparseCholesky::Factorize(const Matrix& matrix) {

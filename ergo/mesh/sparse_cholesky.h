@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -44,6 +45,10 @@ class SparseCholesky {
   // below the diagonal are ignored, so a full symmetric matrix is fine too).
   void Analyze(const Matrix& matrix);
 
+  // Analyse only when `matrix`'s pattern (its compressed index arrays) differs from the one
+  // analysed last, e.g. when a soft support's contact cross blocks change with the contact
+  // set. Returns whether it analysed (a new analysis drops the numeric factor).
+  bool AnalyzeIfChanged(const Matrix& matrix);
   // Numeric factorisation of a matrix with the analysed pattern (CHECKed by size and
   // non-zero count). Returns ok = false with a message for a non-PD matrix.
   FactorizationStatus Factorize(const Matrix& matrix);
@@ -61,6 +66,7 @@ class SparseCholesky {
   Eigen::Index rows_ = 0;
   Eigen::Index nonzeros_ = 0;
   bool factorized_ = false;
+  std::vector<int> outer_, inner_;  // the analysed pattern, for AnalyzeIfChanged
 };
 
 }  // namespace ergo

@@ -77,6 +77,12 @@ TEST(ElasticPart, ReproducesAHomogeneousDeformationImposedOnItsBoundary) {
   EXPECT_LT(residual, 1e-10);
   // Linear tets represent F exactly: the interior lands on F X + t to round-off.
   EXPECT_LT((positions - exact).cwiseAbs().maxCoeff(), 1e-12);
+  // Every tet has that F: the same volume change det F − 1 and the same stress.
+  const Eigen::VectorXd volume_change = part.VolumeChange(positions);
+  const Eigen::VectorXd von_mises = part.VonMisesStress(positions);
+  EXPECT_LT((volume_change.array() - (f.determinant() - 1)).abs().maxCoeff(), 1e-12);
+  EXPECT_GT(von_mises.minCoeff(), 0);
+  EXPECT_LT(von_mises.maxCoeff() - von_mises.minCoeff(), 1e-9 * von_mises.maxCoeff());
 }
 
 TEST(ElasticPart, AColumnUnderItsOwnWeightCarriesItOnItsBaseAndSettlesAsTheory) {
@@ -117,6 +123,15 @@ TEST(ElasticPart, AColumnUnderItsOwnWeightCarriesItOnItsBaseAndSettlesAsTheory) 
     ++top;
   }
   top_settlement /= top;
+  // Uniaxial stress ρ g (L − y): the von Mises stress of each tet is |σ_yy| at its centroid
+  // (the lumped load makes it piecewise constant per layer: within half a layer's weight).
+  const Eigen::VectorXd von_mises = part.VonMisesStress(positions);
+  for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t) {
+    double y = 0;
+    for (int k = 0; k < 4; ++k) y += mesh.vertices(mesh.tets(t, k), 1) / 4;
+    EXPECT_NEAR(von_mises[t], density * g * (length - y), density * g * 0.5 * length / 10)
+        << "tet " << t << " at height " << y;
+  }
   const double theory = density * g * length * length / (2 * modulus);
   std::printf("[ column   ] top settles %.6e m, theory %.6e m (%+.3f %%)\n", top_settlement, theory,
               100 * (top_settlement / theory - 1));

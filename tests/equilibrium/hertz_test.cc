@@ -1,17 +1,22 @@
 // Hertz contact (an answer known without the code): an elastic ball of radius R with a
-// small rigid core, pressed onto a rigid plane by a force F on the core, in the
-// small-strain regime. Theory: contact radius a = (3FR / 4E*)^(1/3), peak pressure
-// p0 = 3F / (2π a²), E* = E / (1 − ν²), pressure p(r) = p0 √(1 − r²/a²). The simulated
-// a and p0 come from a least-squares fit of that profile to the skin-vertex pressures
-// (Ceres, hand-written Jacobian); both must be within 10 % and improve under refinement.
+// small rigid core, pressed onto a rigid plane — or onto a soft slab, a second elastic body
+// (ergo/body/elastic_part.h) — by a force F on the core, in the small-strain regime.
+// Theory: contact radius a = (3FR / 4E*)^(1/3), peak pressure p0 = 3F / (2π a²), pressure
+// p(r) = p0 √(1 − r²/a²), with 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (the rigid plane: E₂ = ∞).
+// The simulated a and p0 come from a least-squares fit of that profile to the skin-vertex
+// pressures (Ceres, hand-written Jacobian); both must be within 10 % and, on the rigid plane,
+// improve under refinement.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 #include <ceres/ceres.h>
 #include <gtest/gtest.h>
 
 #include "ergo/body/core_lock.h"
+#include "ergo/body/elastic_part.h"
 #include "ergo/body/layer_builder.h"
 #include "ergo/equilibrium/calibrate_contact_stiffness.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
@@ -51,7 +56,40 @@ struct HertzMeasurement {
   double penetration = 0;
 };
 
-HertzMeasurement Simulate(double fine_edge, double force) {
+// Grid lines from 0 to ±`extent`: `fine` apart up to `fine_extent`, then growing by 35 % a
+// cell (the last cell ends at `extent`). Sorted, with 0 included.
+std::vector<double> GradedLines(double fine, double fine_extent, double extent, bool both_sides) {
+  std::vector<double> half = {0};
+  double cell = fine;
+  while (half.back() < extent - 1e-12) {
+    if (half.back() >= fine_extent - 1e-12) cell *= 1.35;
+    half.push_back(std::min(extent, half.back() + cell));
+  }
+  std::vector<double> lines;
+  if (both_sides)
+    for (auto it = half.rbegin(); it + 1 != half.rend(); ++it) lines.push_back(-*it);
+  for (double x : half) lines.push_back(x);
+  return lines;
+}
+
+// A slab under the ball: top face at y = 0, 80 mm each side, 70 mm deep with its bottom held;
+// `fine` cells within 15 mm of the axis and 10 mm of the top, graded coarser outwards.
+std::shared_ptr<const ElasticPart> MakeSoftSlab(double fine, double modulus) {
+  const std::vector<double> xs = GradedLines(fine, 0.015, 0.08, true);
+  std::vector<double> ys = GradedLines(fine, 0.01, 0.07, false);
+  for (double& y : ys) y = -y;
+  std::reverse(ys.begin(), ys.end());
+  const TetMesh mesh = MakeRectilinearTetGrid(xs, ys, xs);
+  std::vector<bool> base(static_cast<size_t>(mesh.vertices.rows()));
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
+    base[v] = mesh.vertices(v, 1) < ys.front() + 1e-9;
+  return std::make_shared<const ElasticPart>(
+      ElasticPart::Create(mesh, base, UniformMaterial(mesh.tets.rows(), modulus, kPoisson),
+                          ElasticPartOptions{}, "soft slab"));
+}
+
+// `slab_modulus` 0: the rigid plane.
+HertzMeasurement Simulate(double fine_edge, double force, double slab_modulus = 0) {
   // The ball, refined near its bottom (the contact) and coarse elsewhere.
   const Eigen::Vector3d centre(0, kRadius, 0), bottom(0, 0, 0);
   ImplicitLayer layer;
@@ -76,13 +114,19 @@ HertzMeasurement Simulate(double fine_edge, double force) {
   const LayeredBody body =
       LayeredBody::Create(built.mesh, built.attached, material, options, "Hertz ball");
 
-  const Support plane(MakeBox({-0.1, -0.05, -0.1}, {0.1, 0, 0.1}, {1, 1, 1}), "rigid plane");
+  const std::shared_ptr<const ElasticPart> slab =
+      slab_modulus > 0 ? MakeSoftSlab(fine_edge, slab_modulus) : nullptr;
+  const Support plane =
+      slab ? SoftSupportSurface(*slab, "soft slab")
+           : Support(MakeBox({-0.1, -0.05, -0.1}, {0.1, 0, 0.1}, {1, 1, 1}), "rigid plane");
   const BodyState start = PlaceAboveSupport(body, RestState(body), plane, 1e-4).state;
   EquilibriumOptions eq;
   eq.contact_stiffness = 1e7;  // κ, Pa/m: a first guess for the calibration
-  EquilibriumSolver solver(body, eq);
+  EquilibriumSolver solver(body, eq, slab);
   // Penalty penetration ~1 % of the Hertz indentation a²/R (2 mm here).
-  const double a_theory = std::cbrt(3 * force * kRadius / (4 * kYoung / (1 - kPoisson * kPoisson)));
+  const double compliance =
+      (1 - kPoisson * kPoisson) / kYoung + (slab ? (1 - kPoisson * kPoisson) / slab_modulus : 0.0);
+  const double a_theory = std::cbrt(3 * force * kRadius * compliance / 4);
   EquilibriumResult result;
   const CalibrationResult calibration = CalibrateContactStiffness(
       solver, plane, start, 0.01 * a_theory * a_theory / kRadius, CalibrationOptions(), &result);
@@ -119,7 +163,8 @@ HertzMeasurement Simulate(double fine_edge, double force) {
   m.p0 = parameters[0];
   m.a = parameters[1];
   m.a_moment = std::sqrt(2.5 * moment / total);  // ∫p r² dA / ∫p dA = 2a²/5 for Hertz
-  m.vertices = static_cast<int>(body.rest().vertices.rows());
+  m.vertices = static_cast<int>(body.rest().vertices.rows()) +
+               (slab ? static_cast<int>(slab->rest().vertices.rows()) : 0);
   m.contacts = result.contact_vertices;
   m.penetration = result.max_penetration;
   return m;
@@ -146,6 +191,30 @@ TEST(Equilibrium, HertzContactRadiusAndPeakPressureConvergeToTheory) {
     EXPECT_LT(error, previous_error) << "refinement did not reduce the error";
     previous_error = error;
   }
+}
+
+// The ball on a slab of the same material: E* halves, so the contact is 2^(1/3) wider than on
+// the rigid plane under the same force. Checks that the second deformable body and its
+// contact carry the load as the theory of two elastic bodies says (the slab is 8 contact
+// radii wide and 7 deep: its finite size moves a by about 1–2 %).
+TEST(Equilibrium, HertzContactOfTwoSoftBodiesUsesTheirEffectiveModulus) {
+  const double slab_modulus = kYoung;
+  const double compliance = 2 * (1 - kPoisson * kPoisson) / kYoung;
+  const double a_target = 0.2 * kRadius;
+  const double force = 4 * a_target * a_target * a_target / (3 * kRadius * compliance);
+  const double a = std::cbrt(3 * force * kRadius * compliance / 4),
+               p0 = 3 * force / (2 * M_PI * a * a);
+  const HertzMeasurement m = Simulate(0.0025, force, slab_modulus);
+  const double a_error = std::abs(m.a - a) / a, p_error = std::abs(m.p0 - p0) / p0;
+  const double a_rigid = std::cbrt(3 * force * kRadius * (1 - kPoisson * kPoisson) / kYoung / 4);
+  std::cout << "soft slab: " << m.vertices << " vertices, " << m.contacts
+            << " contacts; a=" << m.a * 1e3 << " mm (theory " << a * 1e3 << ", moment estimate "
+            << m.a_moment * 1e3 << "; on a rigid plane it would be " << a_rigid * 1e3
+            << "), p0=" << m.p0 << " Pa (theory " << p0 << "); errors " << a_error * 100 << " %, "
+            << p_error * 100 << " %\n";
+  EXPECT_LT(a_error, 0.10);
+  EXPECT_LT(p_error, 0.10);
+  EXPECT_LT(std::abs(m.a_moment - a) / a, 0.10);
 }
 
 }  // namespace

@@ -161,5 +161,54 @@ TEST_F(ToolsSimulate, MaxSecondsStopsCleanlyWithExitOneAndWritesNothing) {
   EXPECT_NE(bad.output.find("--max_seconds"), std::string::npos) << bad.output;
 }
 
+// The slab as foam (--support_model=soft): Mesh_3 of the slab, its bottom held; the ball sinks
+// into it, the base carries the load, and the deformed solid with its stress is written. A
+// user's tet mesh of the slab (--support_tets, millimetres) gives the same kind of run; bad
+// soft-support flags exit 2 naming the flag.
+TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
+  const std::string soft =
+      "--contact_stiffness=1e8 --support_model=soft --support_youngs_modulus=2e4 "
+      "--support_edge_length=0.02 --support_base_edge_length=0.05";
+  const CommandResult run = RunCommand(Simulate(soft, "soft"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  for (const char* file : {"body_deformed.vtu", "support.vtu", "support_solid.vtu", "summary.json"})
+    EXPECT_TRUE(fs::exists(*dir_ + "/soft/" + file)) << file;
+  const Json summary = ReadJsonFile(*dir_ + "/soft/summary.json");
+  EXPECT_TRUE(GetBool(summary, "converged", "summary"));
+  const Json& force = GetMember(summary, "total_contact_force_N", "summary");
+  const Json& load = GetMember(summary, "load_N", "summary");
+  EXPECT_NEAR(force.at(1).get<double>(), -load.at(1).get<double>(),
+              1e-6 * std::abs(load.at(1).get<double>()));
+  const Json& foam = GetMember(summary, "soft_support", "summary");
+  // A 20 kPa slab under a ball of ~1 kg: it gives way by more than the contact penetration.
+  EXPECT_GT(GetNumber(foam, "max_displacement_m", "soft_support"),
+            GetNumber(summary, "max_penetration_m", "summary"));
+  EXPECT_NE(GetString(summary, "support_model", "summary").find("soft"), std::string::npos);
+
+  // The same slab from a tet file in millimetres.
+  TetMesh slab = MakeTetGrid({-150, -110, -150}, {150, -60, 150}, {6, 2, 6});
+  WriteTetMesh(*dir_ + "/slab_mm.msh", slab);
+  const CommandResult tets =
+      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
+                 "/ball --support_tets=" + *dir_ +
+                 "/slab_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
+                 "--support_model=soft --out=" +
+                 *dir_ + "/soft_tets");
+  ASSERT_EQ(tets.status, 0) << tets.output;
+  EXPECT_TRUE(fs::exists(*dir_ + "/soft_tets/support_solid.vtu"));
+
+  CommandResult bad = RunCommand(Simulate("--support_model=foam", "bad_soft1"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--support_model"), std::string::npos) << bad.output;
+  bad = RunCommand(Simulate("--support_model=soft --support_poisson_ratio=0.5", "bad_soft2"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--support_poisson_ratio"), std::string::npos) << bad.output;
+  bad = RunCommand(
+      Simulate("--support_model=soft --support_edge_length=0.03 --support_base_edge_length=0.01",
+               "bad_soft3"));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.output.find("--support_base_edge_length"), std::string::npos) << bad.output;
+}
+
 }  // namespace
 }  // namespace ergo

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -31,10 +32,13 @@
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
+#include "tools/common/soft_support_flags.h"
 #include "tools/common/vtu_flags.h"
 
 DEFINE_string(body, "", "body directory written by `ergo_body build` (required)");
-DEFINE_string(support, "", "support surface mesh: .obj .off .ply .stl .msh (required, closed)");
+DEFINE_string(support, "",
+              "support surface mesh: .obj .off .ply .stl .msh (required, closed; with "
+              "--support_model=soft and --support_tets, optional)");
 DEFINE_string(unit, "m", "unit of the support file's coordinates: m or mm");
 DEFINE_string(out, "", "output directory (required; created if missing)");
 DEFINE_string(external_force, "0,0,0", "force on the core FX,FY,FZ in N");
@@ -106,7 +110,8 @@ void CheckUnits(const LayeredBody& body, const TriMesh& support) {
 
 int Run() {
   Require(FLAGS_body, "body");
-  Require(FLAGS_support, "support");
+  const bool soft = SoftSupportRequested();
+  if (!soft || SoftSupportTetFile().empty()) Require(FLAGS_support, "support");
   Require(FLAGS_out, "out");
   RequireInRange("max_iterations", static_cast<long>(FLAGS_max_iterations), 1, 100000, "e.g. 100");
   RequireInRange("gap", FLAGS_gap, 0, 0.1, "metres, e.g. 0.001");
@@ -140,7 +145,16 @@ int Run() {
   StopOnSignals signals;
   OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
   const LayeredBody body = LoadLayeredBody(FLAGS_body, scenario);
-  const TriMesh support_mesh = ReadTriMesh(FLAGS_support, ReadOptions{unit});
+  TriMesh support_mesh =
+      FLAGS_support.empty() ? TriMesh{} : ReadTriMesh(FLAGS_support, ReadOptions{unit});
+  const std::string support_source = FLAGS_support.empty() ? SoftSupportTetFile() : FLAGS_support;
+  std::shared_ptr<const ElasticPart> soft_support;
+  if (soft) {
+    TriMesh boundary;
+    soft_support =
+        SoftSupportFromFlags(support_mesh, FLAGS_support, unit, scenario.gravity, &boundary);
+    support_mesh = std::move(boundary);  // the contact surface is the part's boundary
+  }
   CheckUnits(body, support_mesh);
 
   StaticEquilibriumOptions options;
@@ -152,6 +166,7 @@ int Run() {
   options.gap = FLAGS_gap;
   options.max_seconds = FLAGS_max_seconds;
   options.stop = &StopOnSignals::flag();
+  options.soft_support = soft_support;
   if (FLAGS_progress) {
     options.progress = [](const std::string& line) {
       std::cerr << line << "\n";
@@ -169,7 +184,7 @@ int Run() {
     }
   }
   const StaticEquilibrium solved =
-      SolveStaticEquilibrium(body, support_mesh, FLAGS_support, options);
+      SolveStaticEquilibrium(body, support_mesh, support_source, options);
   const EquilibriumResult& result = solved.result;
   if (!solved.placed_found) {
     std::cerr << "warning: the body meets the support nowhere along the load direction; solved "
@@ -192,11 +207,28 @@ int Run() {
   const std::filesystem::path out(output.path());
   WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, solved.pressures,
                        vtu_encoding);
-  WriteSupportVtu((out / "support.vtu").string(), support_mesh, solved.pressures, Vertices(),
-                  vtu_encoding);
+  if (soft_support) {
+    // The deformed support: its surface (pressures, displacement from rest) and its solid.
+    const Vertices positions = soft_support->Positions(
+        soft_support->rest().vertices, result.state.support_displacement.size() > 0
+                                           ? result.state.support_displacement
+                                           : Eigen::VectorXd::Zero(soft_support->size()));
+    TriMesh deformed = support_mesh;
+    const Eigen::VectorXi& to_part = soft_support->boundary().surface_to_tet;
+    for (Eigen::Index i = 0; i < deformed.vertices.rows(); ++i)
+      deformed.vertices.row(i) = positions.row(to_part[i]);
+    WriteSupportVtu((out / "support.vtu").string(), deformed, solved.pressures,
+                    support_mesh.vertices, vtu_encoding);
+    WriteSoftSupportVtu((out / "support_solid.vtu").string(), *soft_support, positions,
+                        vtu_encoding);
+  } else {
+    WriteSupportVtu((out / "support.vtu").string(), support_mesh, solved.pressures, Vertices(),
+                    vtu_encoding);
+  }
   Json summary = solved.summary;
   summary["body_directory"] = FLAGS_body;
-  summary["support_file"] = FLAGS_support;
+  summary["support_file"] = support_source;
+  summary["support_model"] = DescribeSoftSupportFlags();
   const bool touched = result.contact_vertices > 0 || result.contact_springs > 0;
   const bool calibrated = !solved.calibration || solved.calibration->converged;
   WriteJsonFile((out / "summary.json").string(), summary);
@@ -205,7 +237,8 @@ int Run() {
     std::cerr << "ergo_simulate: " << error << "\n";
     return 1;
   }
-  std::cout << "wrote " << output.final_path() << "/body_deformed.vtu, support.vtu, summary.json\n";
+  std::cout << "wrote " << output.final_path() << "/body_deformed.vtu, support.vtu, "
+            << (soft_support ? "support_solid.vtu, " : "") << "summary.json\n";
   if (!result.converged) return 1;
   if (!touched) {
     std::cerr << "ergo_simulate: the body does not touch the support at equilibrium\n";
@@ -226,8 +259,8 @@ int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "static contact equilibrium of a body on a support\n"
       "  ergo_simulate --body=DIR --support=FILE [--unit=mm] [--external_force=FX,FY,FZ]\n"
-      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto] "
-      "--out=OUT");
+      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto]\n"
+      "    [--support_model=soft [--support_youngs_modulus=PA] [--support_tets=FILE]] --out=OUT");
   try {
     ergo::CheckCommandLine(argc, argv);
   } catch (const ergo::InputError& error) {

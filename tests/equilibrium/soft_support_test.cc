@@ -1,0 +1,215 @@
+// A soft support (ergo/body/elastic_part.h) in the equilibrium (TotalPotential with a soft
+// part): the coupled gradient and exact Hessian — the support's block and the contact's cross
+// blocks between skin and support DOFs — against finite differences, the projected one's
+// semi-definiteness, and a solved equilibrium's balance: the body's contact force carries its
+// load, and the support's base carries the body's load plus the support's own weight.
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "ergo/body/core_lock.h"
+#include "ergo/body/elastic_part.h"
+#include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/equilibrium/placement.h"
+#include "ergo/equilibrium/total_potential.h"
+#include "ergo/mesh/primitives.h"
+#include "tests/support/body/body_fixtures.h"
+#include "tests/support/finite_difference.h"
+
+namespace ergo {
+namespace {
+
+Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
+  const Eigen::MatrixXd u = Eigen::MatrixXd(upper);
+  Eigen::MatrixXd full = u + u.transpose();
+  full.diagonal() = u.diagonal();
+  return full;
+}
+
+// A foam block [lo, hi] on a Kuhn grid with its bottom face held.
+std::shared_ptr<const ElasticPart> MakeSoftBlock(const Eigen::Vector3d& lo,
+                                                 const Eigen::Vector3d& hi,
+                                                 const Eigen::Vector3i& cells, double modulus,
+                                                 double density) {
+  const TetMesh mesh = MakeTetGrid(lo, hi, cells);
+  std::vector<bool> base(static_cast<size_t>(mesh.vertices.rows()));
+  for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
+    base[v] = mesh.vertices(v, 1) < lo.y() + 1e-9;
+  ElasticPartOptions options;
+  options.density = density;
+  options.gravity = Eigen::Vector3d(0, -9.81, 0);
+  return std::make_shared<const ElasticPart>(ElasticPart::Create(
+      mesh, base, UniformMaterial(mesh.tets.rows(), modulus, 0.3), options, "foam block"));
+}
+
+struct Scene {
+  LayeredBody body;
+  std::shared_ptr<const ElasticPart> block;
+  BodyState state;
+};
+
+// A 10 cm hollow cube turned a little and pressed 2 mm into a foam block of 2 cm cells (finer
+// than the cube's 3.3 cm skin, so that block vertices poke the skin's faces), with both
+// parts' free vertices jittered.
+Scene MakeScene(unsigned seed) {
+  LayeredBodyOptions options;
+  options.lock = ParseCoreLock("tx,tz");
+  options.external_force = Eigen::Vector3d(0, -30, 0);
+  const Eigen::Matrix3d turn = RotationExp(Eigen::Vector3d(0.05, 0.3, -0.04));
+  Scene scene{testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options,
+                                          Eigen::Vector3d(0.003, 0.049, -0.002), turn),
+              MakeSoftBlock({-0.12, -0.04, -0.12}, {0.12, 0, 0.12}, {12, 2, 12}, 5e4, 60),
+              {}};
+  scene.state = RestState(scene.body);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (Eigen::Index i = 0; i < scene.state.free_displacement.size(); ++i)
+    scene.state.free_displacement[i] = 2e-4 * uniform(rng);
+  scene.state.centre.y() -= 2e-3;
+  for (Eigen::Index i = 0; i < scene.state.free_displacement.size() / 3; ++i)
+    scene.state.free_displacement[3 * i + 1] -= 2e-3;
+  scene.state.support_displacement = Eigen::VectorXd::Zero(scene.block->size());
+  for (Eigen::Index i = 0; i < scene.block->size(); ++i)
+    scene.state.support_displacement[i] = 2e-4 * uniform(rng);
+  return scene;
+}
+
+// A soft support's contact is two-way whatever the options say (TotalPotential): asking
+// for one-way gives the same potential.
+SurfaceContactOptions ContactOptions(bool two_way) {
+  SurfaceContactOptions contact;
+  contact.stiffness = 3e7;
+  contact.skin_share = 0.5;
+  contact.support_springs = two_way;
+  return contact;
+}
+
+class SoftSupportPotential : public ::testing::TestWithParam<bool> {};
+
+TEST_P(SoftSupportPotential, CoupledGradientAndHessianMatchFiniteDifferences) {
+  const bool two_way = GetParam();
+  const Scene scene = MakeScene(5);
+  const Support rest_surface = SoftSupportSurface(*scene.block);
+  const TotalPotential potential(scene.body, ContactOptions(two_way), scene.block);
+  EXPECT_TRUE(potential.contact().options().support_springs);
+  const ReducedLayout& layout = potential.layout();
+  ASSERT_EQ(layout.support_size(), scene.block->size());
+
+  TotalPotential::Evaluation at;
+  potential.Evaluate(scene.state, rest_surface, HessianKind::kExact, true, nullptr, &at);
+  ASSERT_GT(at.contacts.skin.size(), 3) << "the cube's skin must press into the block";
+  ASSERT_GT(at.contacts.support.size(), 3) << "block vertices must poke the skin";
+  EXPECT_NEAR(potential.Energy(scene.state, rest_surface), at.energy, 1e-12 * std::abs(at.energy));
+  ASSERT_EQ(at.hessian().rows(), layout.size());
+
+  auto energy = [&](const Eigen::VectorXd& step) {
+    return potential.Energy(potential.Retract(scene.state, step), rest_surface);
+  };
+  auto gradient = [&](const Eigen::VectorXd& step) {
+    TotalPotential::Evaluation e;
+    potential.Evaluate(potential.Retract(scene.state, step), rest_surface, HessianKind::kExact,
+                       false, nullptr, &e);
+    return e.gradient;
+  };
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(layout.size());
+  std::string report;
+  // Smooth within the contact configuration: steps of 1e-7..1e-10 m stay inside it.
+  const double gradient_error =
+      testing::WorstGradientError(energy, at.gradient, zero, 1e-6 * at.gradient.norm(),
+                                  testing::StepSweep(1e-7, 4), 4, 0, 3, &report);
+  EXPECT_LT(gradient_error, 1e-6) << report;
+
+  // K̂ against differences of the gradient on every translational DOF (free body vertices,
+  // the core's ty, the block's free vertices); the exp-map retraction makes the rotation
+  // rows differ from the symmetric K̂ away from equilibrium (total_potential_test.cc).
+  std::vector<Eigen::Index> translational;
+  for (Eigen::Index i = 0; i < layout.core_offset(); ++i) translational.push_back(i);
+  for (int j = 0; j < layout.core_count(); ++j)
+    if (layout.core_components()[j] < 3) translational.push_back(layout.core_offset() + j);
+  for (Eigen::Index i = layout.support_offset(); i < layout.size(); ++i) translational.push_back(i);
+  const Eigen::MatrixXd hessian = DenseSymmetric(at.hessian());
+  // The cross blocks are there: some body row couples to some block column.
+  EXPECT_GT(hessian.topRightCorner(layout.support_offset(), layout.support_size()).norm(), 0);
+  std::mt19937 rng(9);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(layout.size());
+    for (Eigen::Index i : translational) d[i] = trial == 0 ? at.gradient[i] : normal(rng);
+    if (trial == 1) d.head(layout.support_offset()).setZero();  // the block's DOFs alone
+    d.normalize();
+    double best = INFINITY;
+    for (double h : {1e-7, 3e-8, 1e-8}) {
+      const Eigen::VectorXd fd = (gradient(h * d) - gradient(-h * d)) / (2 * h);
+      const Eigen::VectorXd analytic = hessian * d;
+      double error = 0, scale = 0;
+      for (Eigen::Index i : translational) {
+        error += (fd[i] - analytic[i]) * (fd[i] - analytic[i]);
+        scale += analytic[i] * analytic[i];
+      }
+      best = std::min(best, std::sqrt(error / scale));
+    }
+    EXPECT_LT(best, 1e-5) << (two_way ? "two-way" : "one-way") << " trial " << trial;
+  }
+
+  TotalPotential::Evaluation projected;
+  potential.Evaluate(scene.state, rest_surface, HessianKind::kProjectedPsd, true, nullptr,
+                     &projected);
+  const Eigen::VectorXd eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(DenseSymmetric(projected.hessian()))
+          .eigenvalues();
+  EXPECT_GT(eigenvalues.minCoeff(), -1e-9 * eigenvalues.cwiseAbs().maxCoeff());
+}
+
+TEST_P(SoftSupportPotential, EquilibriumBalancesTheLoadOnTheBodyAndOnTheBase) {
+  const bool two_way = GetParam();
+  LayeredBodyOptions options;
+  options.lock = ParseCoreLock("tx,tz");
+  options.external_force = Eigen::Vector3d(0, -20, 0);
+  const LayeredBody body =
+      testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options, Eigen::Vector3d(0, 0.06, 0));
+  const auto block = MakeSoftBlock({-0.1, -0.04, -0.1}, {0.1, 0, 0.1}, {10, 4, 10}, 5e4, 60);
+  const Support rest_surface = SoftSupportSurface(*block);
+  EquilibriumOptions eq;
+  eq.contact_support_springs = two_way;
+  EquilibriumSolver solver(body, eq, block);
+  const BodyState start = PlaceAboveSupport(body, RestState(body), rest_surface, 1e-3).state;
+  const EquilibriumResult result = solver.Solve(rest_surface, start);
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  ASSERT_EQ(result.state.support_displacement.size(), block->size());
+
+  const Eigen::Vector3d load = body.TotalLoad();
+  // The body: contact carries its load along the free ty to Newton's tolerance (1e-8 of the
+  // load); the locked tx, tz take whatever sideways force the contact leaves.
+  EXPECT_LE(std::abs(result.contact_force.y() + load.y()), 1e-6 * load.norm());
+  // The block: its held base balances the contact force on it (minus the body's, Newton's
+  // third law: each spring's forces sum to zero) and its own weight.
+  const TotalPotential::Evaluation& e = solver.last_evaluation();
+  Eigen::Vector3d base_reaction = Eigen::Vector3d::Zero();
+  for (Eigen::Index v = 0; v < block->rest().vertices.rows(); ++v)
+    if (block->held()[v]) base_reaction += e.support.vertex_gradient.row(v).transpose();
+  const double block_weight = block->vertex_mass().sum() * 9.81;
+  const Eigen::Vector3d expected = result.contact_force + Eigen::Vector3d(0, block_weight, 0);
+  EXPECT_LE((base_reaction - expected).norm(), 1e-6 * load.norm())
+      << "base " << base_reaction.transpose() << ", expected " << expected.transpose();
+  // The block's top sank under the cube.
+  double deepest = 0;
+  for (Eigen::Index v = 0; v < block->rest().vertices.rows(); ++v)
+    deepest = std::min(deepest, e.support_positions(v, 1) - block->rest().vertices(v, 1));
+  EXPECT_LT(deepest, -1e-4);
+  std::printf(
+      "[ soft     ] %s: %d Newton iterations, block top sank %.3f mm, base reaction "
+      "%.4f N for load %.4f N + block weight %.4f N\n",
+      two_way ? "two-way" : "one-way", result.iterations, -deepest * 1e3, base_reaction.y(),
+      -load.y(), block_weight);
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactOptions, SoftSupportPotential, ::testing::Values(true, false),
+                         [](const auto& info) {
+                           return info.param ? "two_way_asked" : "one_way_asked";
+                         });
+
+}  // namespace
+}  // namespace ergo

@@ -1,0 +1,105 @@
+#include "tools/common/soft_support_flags.h"
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <utility>
+
+#include <gflags/gflags.h>
+
+#include "ergo/body/support_solid.h"
+#include "ergo/body/tissue_material.h"
+#include "ergo/mesh/input_error.h"
+#include "ergo/mesh/mesh_io.h"
+#include "tools/common/flag_checks.h"
+
+DEFINE_string(support_model, "rigid",
+              "rigid: the support does not deform; soft: a foam part (a tet mesh of --support, "
+              "or --support_tets) whose bottom plane is held, paper §4.3");
+DEFINE_double(support_youngs_modulus, 5e4,
+              "soft support: Young's modulus in Pa (seat foams: 2e4–1.25e5; the paper's chair "
+              "cushions 25, 50, 125 kPa)");
+DEFINE_double(support_poisson_ratio, 0.3, "soft support: Poisson's ratio, in (-1, 0.5)");
+DEFINE_double(support_density, 0,
+              "soft support: density in kg/m³ for its own weight (foam 30–80); 0 = weightless");
+DEFINE_string(support_tets, "",
+              "soft support: its tet mesh (.msh, or a TetGen .node/.ele pair, in --unit) instead "
+              "of meshing the support surface; the vertices on its lowest plane are held");
+DEFINE_double(support_edge_length, 0.01,
+              "soft support meshed from the surface: tet edge length at its top, m");
+DEFINE_double(support_base_edge_length, 0.03,
+              "soft support meshed from the surface: tet edge length at its base, m (>= the "
+              "top's)");
+
+namespace ergo {
+
+bool SoftSupportRequested() {
+  if (FLAGS_support_model != "rigid" && FLAGS_support_model != "soft") {
+    throw InputError("--support_model", "", "'" + FLAGS_support_model + "' is not a model",
+                     "use --support_model=rigid or --support_model=soft");
+  }
+  return FLAGS_support_model == "soft";
+}
+
+const std::string& SoftSupportTetFile() { return FLAGS_support_tets; }
+
+std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
+                                                        const std::string& source, LengthUnit unit,
+                                                        const Eigen::Vector3d& gravity,
+                                                        TriMesh* contact_surface) {
+  RequireInRange("support_youngs_modulus", FLAGS_support_youngs_modulus, 1.0, 1e11,
+                 "Pa, e.g. 5e4 for a seat foam");
+  if (!(FLAGS_support_poisson_ratio > -1 && FLAGS_support_poisson_ratio < 0.5)) {
+    throw InputError("--support_poisson_ratio", "",
+                     std::to_string(FLAGS_support_poisson_ratio) + " is outside (-1, 0.5)",
+                     "e.g. 0.3 for a foam");
+  }
+  RequireInRange("support_density", FLAGS_support_density, 0, 1e4, "kg/m³, e.g. 50, or 0");
+  TetMesh mesh;
+  std::vector<bool> held;
+  std::string name = source;
+  if (!FLAGS_support_tets.empty()) {
+    name = FLAGS_support_tets;
+    mesh = ReadTetMesh(FLAGS_support_tets, ReadOptions{unit});
+    // Meshers disagree on orientation: turn inverted tets, refuse flat ones (by name).
+    for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
+      if (TetVolume(mesh, t) < 0) std::swap(mesh.tets(t, 2), mesh.tets(t, 3));
+    const double size =
+        (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+    held = BottomVertices(mesh, 1e-6 * size);
+  } else {
+    RequireInRange("support_edge_length", FLAGS_support_edge_length, 1e-4, 1.0,
+                   "metres, e.g. 0.01");
+    RequireInRange("support_base_edge_length", FLAGS_support_base_edge_length,
+                   FLAGS_support_edge_length, 1.0, "metres, at least --support_edge_length");
+    SupportSolidOptions options;
+    options.top_edge_length = FLAGS_support_edge_length;
+    options.base_edge_length = FLAGS_support_base_edge_length;
+    options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
+    SupportSolid solid = MeshSupportSolid(surface, options, source);
+    mesh = std::move(solid.mesh);
+    held = std::move(solid.base);
+  }
+  ElasticPartOptions options;
+  options.density = FLAGS_support_density;
+  options.gravity = FLAGS_support_density > 0 ? gravity : Eigen::Vector3d::Zero();
+  TissueMaterial material =
+      UniformMaterial(mesh.tets.rows(), FLAGS_support_youngs_modulus, FLAGS_support_poisson_ratio);
+  auto part = std::make_shared<const ElasticPart>(
+      ElasticPart::Create(std::move(mesh), std::move(held), std::move(material), options, name));
+  *contact_surface = part->boundary().surface;
+  return part;
+}
+
+std::string DescribeSoftSupportFlags() {
+  std::ostringstream out;
+  out << FLAGS_support_model;
+  if (FLAGS_support_model == "soft") {
+    out << " (E " << FLAGS_support_youngs_modulus << " Pa, nu " << FLAGS_support_poisson_ratio
+        << ", density " << FLAGS_support_density << " kg/m3, "
+        << (FLAGS_support_tets.empty() ? "meshed from the surface" : FLAGS_support_tets) << ")";
+  }
+  return out.str();
+}
+
+}  // namespace ergo
