@@ -96,6 +96,9 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   json["relative_residual"] = result.relative_residual;
   json["contact_vertices"] = result.contact_vertices;
   json["contact_springs"] = result.contact_springs;
+  json["factorizations"] = result.factorizations;
+  json["symbolic_analyses"] = result.analyses;
+  json["analysis_seconds"] = result.analysis_seconds;
   json["max_penetration_m"] = result.max_penetration;
   json["total_contact_force_N"] = Vector3Json(result.contact_force);
   json["load_N"] = Vector3Json(body.TotalLoad());

@@ -90,7 +90,10 @@ std::string EquilibriumResult::FullReport() const {
       << "  energy " << energy << " J, contact force (" << contact_force.transpose() << ") N\n"
       << "  linear algebra: " << factorizations << " factorisations, " << pcg_iterations
       << " PCG iterations on reused factors, " << line_search_trials << " line-search trials"
-      << (analyses > 0 ? ", " + std::to_string(analyses) + " symbolic analyses" : "") << "\n"
+      << (analyses > 0 ? ", " + std::to_string(analyses) + " symbolic analyses (" +
+                             std::to_string(analysis_seconds) + " s)"
+                       : "")
+      << "\n"
       << "  active set: " << contacts_entered << " entered, " << contacts_left << " left, "
       << feature_switches << " feature switches\n"
       << "  time: assembly " << assembly_seconds << " s, contact " << contact_seconds
@@ -123,7 +126,7 @@ FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& st
                                                              bool free_fall, SparseMatrix* hessian,
                                                              int* factorizations) {
   if (free_fall) potential_.AddScaledMass(options_.free_fall_mass_scale, state, positions, hessian);
-  if (cholesky_.AnalyzeIfChanged(*hessian)) ++analyses_;
+  AnalyzeIfChanged(*hessian);
   FactorizationStatus factor = cholesky_.Factorize(*hessian);
   ++*factorizations;
   if (factor.ok) return factor;
@@ -136,6 +139,14 @@ FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& st
     ++*factorizations;
   }
   return factor;
+}
+
+void EquilibriumSolver::AnalyzeIfChanged(const SparseMatrix& hessian) {
+  const Clock::time_point start = Clock::now();
+  if (cholesky_.AnalyzeIfChanged(hessian)) {
+    ++analyses_;
+    analysis_seconds_ += SecondsSince(start);
+  }
 }
 
 void EquilibriumSolver::set_contact_stiffness(double k) {
@@ -181,6 +192,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
   result.state = start;
   BodyState& state = result.state;
   const int analyses_at_start = analyses_;
+  const double analysis_seconds_at_start = analysis_seconds_;
   const Eigen::Index vertex_count = body_.rest().vertices.rows();
   if (static_cast<Eigen::Index>(hints_.size()) != vertex_count)
     hints_.assign(vertex_count, SupportPoint());
@@ -226,6 +238,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
     result.converged =
         status == EquilibriumStatus::kConverged || status == EquilibriumStatus::kStalled;
     result.analyses = analyses_ - analyses_at_start;
+    result.analysis_seconds = analysis_seconds_ - analysis_seconds_at_start;
     result.message = message;
     result.total_seconds = SecondsSince(begin);
     return result;
@@ -307,7 +320,7 @@ EquilibriumResult EquilibriumSolver::Solve(const Support& support, const BodySta
         SparseMatrix exact = e.hessian();
         if (!in_contact)
           potential_.AddScaledMass(options_.free_fall_mass_scale, state, e.positions, &exact);
-        if (cholesky_.AnalyzeIfChanged(exact)) ++analyses_;
+        AnalyzeIfChanged(exact);
         exact_ok = cholesky_.Factorize(exact).ok;
         ++result.factorizations;
       }

@@ -115,8 +115,9 @@ struct EquilibriumResult {
   // a soft support, one whenever the contact's cross blocks changed K̂'s pattern. Their time
   // is in factorization_seconds.
   int analyses = 0;
-  int pcg_iterations = 0;      // conjugate-gradient iterations on reused factors
-  int line_search_trials = 0;  // energy evaluations of the line searches
+  double analysis_seconds = 0;  // their part of factorization_seconds
+  int pcg_iterations = 0;       // conjugate-gradient iterations on reused factors
+  int line_search_trials = 0;   // energy evaluations of the line searches
   // Active-set changes summed over the iterations (NewtonIterationReport); with a start out
   // of contact, entered − left = contact_vertices.
   int contacts_entered = 0, contacts_left = 0, feature_switches = 0;
@@ -171,6 +172,8 @@ class EquilibriumSolver {
   // normal) along which the contacts give no stiffness, or "" if there is none.
   std::string UnconstrainedTranslations(const TotalPotential::Evaluation& evaluation) const;
   bool FellPastSupport(const Vertices& positions, const Support& support) const;
+  // Re-analyses K̂'s pattern when it changed (a soft support's contact), counting and timing.
+  void AnalyzeIfChanged(const SparseMatrix& hessian);
   // Factorises `hessian` (+ α M in free fall), regularising with growing multiples of M if
   // it is singular; returns the status of the last attempt and adds the attempts to
   // *factorizations.
@@ -185,7 +188,8 @@ class EquilibriumSolver {
   std::vector<SupportPoint> hints_;
   TotalPotential::Evaluation last_;
   bool last_exact_ = false;
-  int analyses_ = 0;      // symbolic analyses so far (EquilibriumResult::analyses)
+  int analyses_ = 0;  // symbolic analyses so far (EquilibriumResult::analyses)
+  double analysis_seconds_ = 0;
   double body_size_ = 1;  // bounding-box diagonal of the rest body, m
 };
 

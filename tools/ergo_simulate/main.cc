@@ -57,6 +57,10 @@ DEFINE_int32(stall_iterations, 5,
              "this many Newton iterations in a row, reported as 'converged (stalled)' (a faceted "
              "support's creases can keep Newton from --tolerance); 0 = only --tolerance");
 DEFINE_int32(max_iterations, 100, "Newton iteration cap");
+DEFINE_bool(support_springs, false,
+            "two-way contact: the support's vertices inside the skin push too (always so with "
+            "--support_model=soft); false: the paper's one-way equilibrium, the support's side "
+            "scored only");
 DEFINE_int32(threads, 0, "threads for assembly and contact (0 = all cores)");
 DEFINE_bool(progress, true,
             "print progress to stderr: placement, each calibration step and Newton iteration "
@@ -167,6 +171,7 @@ int Run() {
   options.max_seconds = FLAGS_max_seconds;
   options.stop = &StopOnSignals::flag();
   options.soft_support = soft_support;
+  options.two_way_contact = FLAGS_support_springs || soft;
   if (FLAGS_progress) {
     options.progress = [](const std::string& line) {
       std::cerr << line << "\n";
