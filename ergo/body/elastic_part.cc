@@ -71,6 +71,28 @@ ElasticPart ElasticPart::Create(TetMesh rest, std::vector<bool> held, TissueMate
   return part;
 }
 
+ElasticPart ElasticPart::WithRestPositions(const Vertices& rest) const {
+  CHECK_EQ(rest.rows(), rest_.vertices.rows());
+  ElasticPart part = *this;
+  part.rest_.vertices = rest;
+  for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t) {
+    if (!(TetVolume(part.rest_, t) > 0)) {
+      throw InputError("rest shape", "tet " + std::to_string(t),
+                       "the designed rest shape inverts or flattens this tet",
+                       "take a shorter design step");
+    }
+  }
+  part.vertex_mass_.setZero();
+  for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t) {
+    const double mass = options_.density * TetVolume(part.rest_, t) / 4;
+    for (int k = 0; k < 4; ++k) part.vertex_mass_[rest_.tets(t, k)] += mass;
+  }
+  for (Eigen::Index i = 0; i < boundary_.surface_to_tet.size(); ++i)
+    part.boundary_.surface.vertices.row(i) = rest.row(boundary_.surface_to_tet[i]);
+  part.kernel_ = std::make_shared<const TetKernel>(part.rest_, part.material_);
+  return part;
+}
+
 void ElasticPart::BuildPattern() {
   const Tetrahedra& tets = rest_.tets;
   std::vector<Eigen::Triplet<double>> entries;

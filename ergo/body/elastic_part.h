@@ -47,6 +47,11 @@ class ElasticPart {
   static ElasticPart Create(TetMesh rest, std::vector<bool> held, TissueMaterial material,
                             const ElasticPartOptions& options, const std::string& name);
 
+  // The same part on other rest positions (a designed rest shape): topology, held set,
+  // material and stiffness pattern kept; rest data, masses and the boundary's positions
+  // recomputed. Throws InputError naming the first tet the move inverts or flattens.
+  ElasticPart WithRestPositions(const Vertices& rest) const;
+
   const TetMesh& rest() const { return rest_; }
   const std::vector<bool>& held() const { return held_; }
   const TissueMaterial& material() const { return material_; }

@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "ergo/mesh/seconds_since.h"
+#include "ergo/mesh/surface_geometry.h"
 
 namespace ergo {
 namespace {
@@ -270,6 +271,50 @@ Triplets TotalPotential::AddSoftSupportTerms(const BodyState& state, HessianKind
     }
   }
   return blocks;
+}
+
+Vertices TotalPotential::RestShapeAdjoint(const BodyState& state, const Eigen::VectorXd& z,
+                                          const Evaluation& e) const {
+  CHECK(soft_support_) << "RestShapeAdjoint needs a soft support";
+  CHECK_EQ(z.size(), size());
+  const ElasticPart& part = *soft_support_;
+  const Eigen::Index offset = layout().support_offset();
+  // z as displacements of the foam's vertices (0 on the held ones) and of the body's.
+  Vertices z_support = Vertices::Zero(part.rest().vertices.rows(), 3);
+  for (Eigen::Index k = 0; k < part.free_vertices().size(); ++k)
+    z_support.row(part.free_vertices()[k]) = z.segment<3>(offset + 3 * k).transpose();
+  const Vertices z_body = layout().VertexVelocity(body(), state, e.positions, z);
+  Vertices out = part.RestShapeAdjoint(e.support_positions, z_support);
+
+  // A support spring's k = ½κ(1 − α)A_j: ∂(zᵀG)/∂A_j = (z · its forces' gradient)/A_j, and
+  // A_j = Σ_{f ∋ j} area(f)/3 at rest.
+  if (!e.contacts.support_springs || e.contacts.support.contacts.empty()) return out;
+  const TetBoundary& boundary = part.boundary();
+  const Eigen::VectorXi& surface_to_part = boundary.surface_to_tet;
+  const Eigen::VectorXi& skin_vertices = body().skin().vertices;
+  const Eigen::VectorXd rest_areas = BarycentricVertexAreas(boundary.surface);
+  Eigen::VectorXd d_area = Eigen::VectorXd::Zero(rest_areas.size());
+  for (const Contact& contact : e.contacts.support.contacts) {
+    const int j = contact.point;
+    double change = z_support.row(surface_to_part[j]).dot(contact.spring.gradient.head<3>());
+    for (int k = 0; k < contact.anchor.feature.size(); ++k)
+      change += z_body.row(skin_vertices[contact.anchor.feature.vertices[k]])
+                    .dot(contact.spring.gradient.segment<3>(3 + 3 * k));
+    d_area[j] = change / rest_areas[j];
+  }
+  const Triangles& triangles = boundary.surface.triangles;
+  const Vertices& rest = boundary.surface.vertices;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    const double weight =
+        (d_area[triangles(f, 0)] + d_area[triangles(f, 1)] + d_area[triangles(f, 2)]) / 3;
+    if (weight == 0) continue;
+    const Eigen::Matrix3d gradient = TriangleAreaGradient(rest.row(triangles(f, 0)).transpose(),
+                                                          rest.row(triangles(f, 1)).transpose(),
+                                                          rest.row(triangles(f, 2)).transpose());
+    for (int c = 0; c < 3; ++c)
+      out.row(surface_to_part[triangles(f, c)]) += weight * gradient.row(c);
+  }
+  return out;
 }
 
 void TotalPotential::AddSupportSamples(const Support& support, bool with_hessian,

@@ -114,6 +114,16 @@ class TotalPotential {
   // M̂ alone, upper triangle (for scaling regularisations).
   SparseMatrix Mass(const BodyState& state, const Vertices& positions) const;
 
+  // The rest-shape term of a soft support's design gradient (paper Eq. 22–23): zᵀ ∂G/∂X, the
+  // change of the reduced residual G = ∂E/∂y contracted with an adjoint vector z (size()),
+  // per unit of the soft support's rest positions X, every deformed position held fixed
+  // (so the held base, whose positions are its rest positions, must not be designed). Terms:
+  // the foam's element forces and weight (ElasticPart::RestShapeAdjoint) and the support
+  // springs' stiffness, proportional to their vertices' rest areas. `e`: an evaluation at the
+  // state z belongs to. #V_support x 3, N.
+  Vertices RestShapeAdjoint(const BodyState& state, const Eigen::VectorXd& z,
+                            const Evaluation& e) const;
+
   // Residual norm used for convergence: sqrt(Σ forces² + Σ (torques / L)²) with L the
   // core's lever length (largest attached-vertex distance from the core centre), so that
   // torques are measured as the equivalent force at the core's rim; a soft support's free

@@ -3,7 +3,9 @@
 // blocks between skin and support DOFs — against finite differences, the projected one's
 // semi-definiteness, and a solved equilibrium's balance: the body's contact force carries its
 // load, and the support's base carries the body's load plus the support's own weight.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <random>
 
@@ -29,20 +31,25 @@ Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
   return full;
 }
 
-// A foam block [lo, hi] on a Kuhn grid with its bottom face held.
-std::shared_ptr<const ElasticPart> MakeSoftBlock(const Eigen::Vector3d& lo,
-                                                 const Eigen::Vector3d& hi,
-                                                 const Eigen::Vector3i& cells, double modulus,
-                                                 double density) {
-  const TetMesh mesh = MakeTetGrid(lo, hi, cells);
+// A foam part on `mesh` with the vertices at or below `base_y` held.
+std::shared_ptr<const ElasticPart> MakeFoam(const TetMesh& mesh, double base_y, double modulus,
+                                            double density) {
   std::vector<bool> base(static_cast<size_t>(mesh.vertices.rows()));
   for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
-    base[v] = mesh.vertices(v, 1) < lo.y() + 1e-9;
+    base[v] = mesh.vertices(v, 1) < base_y + 1e-9;
   ElasticPartOptions options;
   options.density = density;
   options.gravity = Eigen::Vector3d(0, -9.81, 0);
   return std::make_shared<const ElasticPart>(ElasticPart::Create(
       mesh, base, UniformMaterial(mesh.tets.rows(), modulus, 0.3), options, "foam block"));
+}
+
+// A foam block [lo, hi] on a Kuhn grid with its bottom face held.
+std::shared_ptr<const ElasticPart> MakeSoftBlock(const Eigen::Vector3d& lo,
+                                                 const Eigen::Vector3d& hi,
+                                                 const Eigen::Vector3i& cells, double modulus,
+                                                 double density) {
+  return MakeFoam(MakeTetGrid(lo, hi, cells), lo.y(), modulus, density);
 }
 
 struct Scene {
@@ -161,6 +168,71 @@ TEST_P(SoftSupportPotential, CoupledGradientAndHessianMatchFiniteDifferences) {
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(DenseSymmetric(projected.hessian()))
           .eigenvalues();
   EXPECT_GT(eigenvalues.minCoeff(), -1e-9 * eigenvalues.cwiseAbs().maxCoeff());
+}
+
+// zᵀ G as a function of the foam's rest positions X with every deformed position held (the
+// foam rebuilt on X, its displacements x − X): its X-gradient is RestShapeAdjoint — the
+// element forces, the weight, and the support springs' rest areas — along random directions
+// and along the analytic gradient itself, over the foam's free vertices (the held base's
+// positions are its rest positions).
+TEST(SoftSupport, RestShapeAdjointMatchesFiniteDifferencesOfTheResidual) {
+  const Scene scene = MakeScene(5);
+  const SurfaceContactOptions contact = ContactOptions(true);
+  const TotalPotential potential(scene.body, contact, scene.block);
+  TotalPotential::Evaluation at;
+  potential.Evaluate(scene.state, SoftSupportSurface(*scene.block), HessianKind::kExact, false,
+                     nullptr, &at);
+  ASSERT_GT(at.contacts.support.size(), 3) << "the area terms need support springs";
+  std::mt19937 rng(21);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd z(potential.size());
+  for (Eigen::Index i = 0; i < z.size(); ++i) z[i] = normal(rng);
+  const Vertices analytic = potential.RestShapeAdjoint(scene.state, z, at);
+  const TetMesh& rest = scene.block->rest();
+  const Vertices deformed = at.support_positions;
+  auto contracted = [&](const Eigen::VectorXd& rest_vector) {
+    TetMesh moved = rest;
+    moved.vertices = Eigen::Map<const Vertices>(rest_vector.data(), rest.vertices.rows(), 3);
+    const auto foam = MakeFoam(moved, -0.04, 5e4, 60);
+    const TotalPotential at_x(scene.body, contact, foam);
+    BodyState state = scene.state;
+    state.support_displacement = foam->FreeComponents(deformed - moved.vertices);
+    TotalPotential::Evaluation e;
+    at_x.Evaluate(state, SoftSupportSurface(*foam), HessianKind::kExact, false, nullptr, &e);
+    return e.gradient.dot(z);
+  };
+  // Only free vertices move; the analytic gradient restricted to them.
+  Eigen::VectorXd gradient = Eigen::Map<const Eigen::VectorXd>(analytic.data(), analytic.size());
+  for (Eigen::Index v = 0; v < rest.vertices.rows(); ++v)
+    if (scene.block->held()[v]) gradient.segment<3>(3 * v).setZero();
+  const Eigen::VectorXd x0 =
+      Eigen::Map<const Eigen::VectorXd>(rest.vertices.data(), rest.vertices.size());
+  double worst = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(x0.size());
+    if (trial == 0) {
+      d = gradient;
+    } else {
+      for (Eigen::Index v = 0; v < rest.vertices.rows(); ++v)
+        if (!scene.block->held()[v])
+          for (int c = 0; c < 3; ++c) d[3 * v + c] = normal(rng);
+    }
+    d.normalize();
+    const testing::SweepResult sweep = testing::CheckDirectional(
+        contracted, x0, d, gradient.dot(d), 1e-6 * gradient.norm(), testing::StepSweep(1e-6, 4));
+    EXPECT_LT(sweep.best_relative_error, 1e-6) << "trial " << trial << "\n" << sweep.report;
+    worst = std::max(worst, sweep.best_relative_error);
+  }
+  std::printf("[ FD       ] soft support rest-shape term z^T dG/dX: %.2e\n", worst);
+  // The area terms matter: without them the check above would fail by more than this.
+  const Vertices elastic_only = scene.block->RestShapeAdjoint(at.support_positions, [&] {
+    Vertices zs = Vertices::Zero(rest.vertices.rows(), 3);
+    const Eigen::Index offset = potential.layout().support_offset();
+    for (Eigen::Index k = 0; k < scene.block->free_vertices().size(); ++k)
+      zs.row(scene.block->free_vertices()[k]) = z.segment<3>(offset + 3 * k).transpose();
+    return zs;
+  }());
+  EXPECT_GT((analytic - elastic_only).norm(), 1e-3 * analytic.norm());
 }
 
 TEST_P(SoftSupportPotential, EquilibriumBalancesTheLoadOnTheBodyAndOnTheBase) {

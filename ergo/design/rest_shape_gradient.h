@@ -1,0 +1,33 @@
+// The score's gradient with respect to a soft support's rest shape (paper §4.3, Eq. 21–23):
+// at an equilibrium y* of body and foam, dζ/dX = ∂ζ/∂X − zᵀ ∂G/∂X with the adjoint K̂ z =
+// (∂ζ/∂y)ᵀ, where y holds the foam's displacements too and both partials are taken with
+// every deformed position fixed (so the held base, whose positions are its rest positions,
+// is not designed). ∂ζ/∂X is the foam's rest vertex areas' share (its contact quadrature and
+// score weights, ChainSupportAreas); zᵀ∂G/∂X is TotalPotential::RestShapeAdjoint (element
+// forces, weight, support springs' areas). A design space pulls it back through its own map
+// (RestExtension for the interior, then the top's parameterisation).
+#pragma once
+
+#include <string>
+
+#include "ergo/design/contact_pressures.h"
+#include "ergo/equilibrium/total_potential.h"
+#include "ergo/mesh/sparse_cholesky.h"
+
+namespace ergo {
+
+struct RestShapeGradient {
+  bool ok = false;
+  std::string message;  // why not ok (K̂ not positive definite), or "ok"
+  Vertices gradient;    // dζ/dX per foam vertex (#V_support x 3), Pa^e·m²/m
+};
+
+// `e`: the evaluation at `state` with the exact K̂ (TotalPotential::Evaluate with
+// HessianKind::kExact and the contact Hessians); `pressures`: the score's pressures of its
+// contacts. `support_side` false: ζ's skin side alone. `cholesky` is (re)analysed as needed.
+RestShapeGradient SoftSupportRestGradient(const TotalPotential& potential, const BodyState& state,
+                                          const TotalPotential::Evaluation& e,
+                                          const ContactPressures& pressures, bool support_side,
+                                          SparseCholesky* cholesky);
+
+}  // namespace ergo
