@@ -6,8 +6,10 @@
 
 #include <glog/logging.h>
 
+#include "ergo/design/rest_shape_gradient.h"
 #include "ergo/design/score_gradient.h"
 #include "ergo/equilibrium/placement.h"
+#include "ergo/mesh/input_error.h"
 #include "ergo/mesh/preconditioned_cg.h"
 #include "ergo/mesh/seconds_since.h"
 #include "ergo/mesh/surface_geometry.h"
@@ -41,11 +43,34 @@ DesignProblem::DesignProblem(const LayeredBody& body, const TriMesh& support,
       support_laplacian_(UmbrellaLaplacian(support.triangles, support.vertices.rows())),
       support_(support, "support"),
       pressures_(body, support, options.pressure),
-      solver_(body, options_.equilibrium),
+      solver_(body, options_.equilibrium, options.soft_support),
       start_(start),
       last_state_(start),
       counters_(std::make_shared<DesignCounters>()) {
-  adjoint_cholesky_.Analyze(solver_.potential().system().pattern());  // rigid: fixed pattern
+  if (!options.soft_support) {
+    adjoint_cholesky_.Analyze(solver_.potential().system().pattern());  // fixed pattern
+    return;
+  }
+  // The foam: its boundary is the support mesh; designed = active boundary vertices off the
+  // held base, fixed = the rest of the boundary and the base; the interior follows.
+  const ElasticPart& part = *options.soft_support;
+  const Eigen::VectorXi& surface_to_part = part.boundary().surface_to_tet;
+  CHECK_EQ(surface_to_part.size(), support.vertices.rows())
+      << "a soft support's problem takes its boundary at rest as the support mesh";
+  const Eigen::Index n = part.rest().vertices.rows();
+  rest_designed_.assign(static_cast<size_t>(n), false);
+  std::vector<bool> fixed(static_cast<size_t>(n), false);
+  for (Eigen::Index v = 0; v < n; ++v) fixed[v] = part.held()[v];
+  for (Eigen::Index i = 0; i < surface_to_part.size(); ++i) {
+    const int v = surface_to_part[i];
+    const bool active = options.active.empty() || options.active[i];
+    if (active && !part.held()[v]) {
+      rest_designed_[v] = true;
+    } else {
+      fixed[v] = true;
+    }
+  }
+  rest_extension_.emplace(part.rest(), rest_designed_, fixed);
 }
 
 DesignProblem::DesignProblem(const DesignProblem& other)
@@ -64,7 +89,9 @@ DesignProblem::DesignProblem(const DesignProblem& other)
       last_solve_ok_(other.last_solve_ok_),
       cache_(other.cache_),
       anchors_(other.anchors_),
-      counters_(other.counters_) {}
+      counters_(other.counters_),
+      rest_designed_(other.rest_designed_),
+      rest_extension_(other.rest_extension_) {}
 
 void DesignProblem::set_contact_stiffness(double k) {
   options_.equilibrium.contact_stiffness = k;
@@ -159,6 +186,23 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   Clock::time_point mark = Clock::now();
   const Vertices support_positions = parameterization_.Positions(x);
   support_.UpdateVertices(support_positions);
+  if (options_.soft_support) {
+    // The foam's rest shape at x: its designed boundary where the design puts it, the
+    // interior following.
+    const ElasticPart& part = *options_.soft_support;
+    const Eigen::VectorXi& surface_to_part = part.boundary().surface_to_tet;
+    Vertices designed_move = Vertices::Zero(part.rest().vertices.rows(), 3);
+    for (Eigen::Index i = 0; i < surface_to_part.size(); ++i)
+      if (rest_designed_[surface_to_part[i]])
+        designed_move.row(surface_to_part[i]) =
+            support_positions.row(i) - initial_support_.vertices.row(i);
+    try {
+      solver_.set_soft_support(std::make_shared<const ElasticPart>(
+          part.WithRestPositions(part.rest().vertices + rest_extension_->Extend(designed_move))));
+    } catch (const InputError& error) {
+      return fail(std::string("the design's rest shape cannot be used: ") + error.what());
+    }
+  }
   timing.support_seconds = SecondsSince(mark);
   // The start of the solve: placed afresh, warm from the nearest design, or one hop from the
   // nearest fresh anchor.
@@ -170,7 +214,8 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     bool from_last = false;
     fresh = cache_.empty();
     solve_start = fresh ? FreshStart() : WarmStart(x, &from_last);
-    predict = from_last && last_solve_ok_ && options_.tangent_predictor &&
+    // (Not for a soft support: its rest shape, not a rigid surface, moves with the design.)
+    predict = from_last && last_solve_ok_ && options_.tangent_predictor && !options_.soft_support &&
               solver_.last_hessian_exact() && solver_.factor().factorized();
   } else if (options_.placement == DesignPlacement::kFresh) {
     fresh = true;
@@ -248,7 +293,30 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   out.phi = out.zeta + options_.gamma * out.psi;
   if (!std::isfinite(out.phi)) return fail("the objective is not finite");
 
-  if (with_gradient) {
+  if (with_gradient && options_.soft_support) {
+    // dζ/dX at every deformed position fixed (rest_shape_gradient.h), pulled back through the
+    // interior's extension to the designed boundary and through the design space.
+    mark = Clock::now();
+    const RestShapeGradient rest = SoftSupportRestGradient(
+        potential, state, e, out.pressures, options_.score_support_side, &adjoint_cholesky_);
+    ++timing.adjoint_factorizations;
+    if (!rest.ok) {
+      timing.adjoint_seconds += SecondsSince(mark);
+      return fail(rest.message);
+    }
+    const Vertices designed = rest_extension_->PullBack(rest.gradient);
+    const Eigen::VectorXi& surface_to_part = options_.soft_support->boundary().surface_to_tet;
+    Vertices d_support(surface_to_part.size(), 3);
+    for (Eigen::Index i = 0; i < surface_to_part.size(); ++i)
+      d_support.row(i) = designed.row(surface_to_part[i]);
+    out.zeta_gradient = parameterization_.PullBack(d_support);
+    timing.adjoint_seconds += SecondsSince(mark);
+    mark = Clock::now();
+    out.psi_gradient = parameterization_.PullBack(psi.gradient);
+    timing.psi_seconds += SecondsSince(mark);
+    out.gradient = out.zeta_gradient + options_.gamma * out.psi_gradient;
+    ++counters_->gradients;
+  } else if (with_gradient) {
     mark = Clock::now();
     ScorePartials partials =
         PressureScorePartials(out.pressures, body_, options_.score_support_side);

@@ -15,13 +15,16 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "ergo/body/elastic_part.h"
 #include "ergo/body/layered_body.h"
+#include "ergo/body/rest_extension.h"
 #include "ergo/contact/support.h"
 #include "ergo/design/contact_pressures.h"
 #include "ergo/design/evaluation_timing.h"
@@ -80,6 +83,11 @@ struct DesignOptions {
   // support's samples push nothing, and their term depends on how the two meshes interleave
   // (ergo/design/README.md, "Designs on two sole meshes").
   bool score_support_side = true;
+  // The support as foam whose rest shape is the design (paper §4.3; null: rigid, its
+  // surface is the design). The support mesh given to the problem must be its boundary at rest
+  // (ElasticPart::boundary().surface); `active` flags the designed boundary vertices (the held
+  // base never is), the interior's rest positions follow harmonically (RestExtension).
+  std::shared_ptr<const ElasticPart> soft_support;
 };
 
 struct DesignEvaluation {
@@ -172,6 +180,10 @@ class DesignProblem {
   std::vector<std::pair<Eigen::VectorXd, BodyState>> cache_;
   std::vector<std::pair<Eigen::VectorXd, BodyState>> anchors_;  // kAnchored: fresh placements
   std::shared_ptr<DesignCounters> counters_;
+  // A soft support: its designed vertices and how the interior follows (own copy per problem
+  // copy: the extension's factor is not shared between threads).
+  std::vector<bool> rest_designed_;
+  std::optional<RestExtension> rest_extension_;
 };
 
 // γ = κ · 10^j with κ such that ζ(x₀) = κ ψ(x₀) (paper §4.1). Evaluates x₀ once; returns

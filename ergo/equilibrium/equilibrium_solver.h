@@ -154,6 +154,10 @@ class EquilibriumSolver {
   const TotalPotential& potential() const { return potential_; }
   const EquilibriumOptions& options() const { return options_; }
   void set_contact_stiffness(double k);
+  // Another rest shape of the soft support (TotalPotential::set_soft_support).
+  void set_soft_support(std::shared_ptr<const ElasticPart> part) {
+    potential_.set_soft_support(std::move(part));
+  }
 
   // Per tet-mesh-vertex anchors of the last solve (closest-point hints for the next).
   std::vector<SupportPoint>& hints() { return hints_; }

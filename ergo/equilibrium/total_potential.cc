@@ -104,6 +104,14 @@ TotalPotential::TotalPotential(const LayeredBody& body, const SurfaceContactOpti
   lever_length_ = lever > 0 ? lever : 1.0;
 }
 
+void TotalPotential::set_soft_support(std::shared_ptr<const ElasticPart> part) {
+  CHECK(soft_support_ && part) << "a soft support replaces a soft support";
+  CHECK_EQ(part->size(), soft_support_->size());
+  CHECK_EQ(part->rest().vertices.rows(), soft_support_->rest().vertices.rows());
+  soft_support_ = std::move(part);
+  soft_surface_.reset();  // pinned to the new rest areas at the next evaluation
+}
+
 Vertices TotalPotential::SupportPositions(const BodyState& state) const {
   const Vertices& rest = soft_support_->rest().vertices;
   if (state.support_displacement.size() == 0) return rest;

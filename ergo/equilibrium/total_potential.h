@@ -76,6 +76,8 @@ class TotalPotential {
   const ReducedLayout& layout() const { return system_.layout(); }
   const LayeredBody& body() const { return system_.body(); }
   const ElasticPart* soft_support() const { return soft_support_.get(); }
+  // Another rest shape of the same soft support (same topology and DOFs: a design step).
+  void set_soft_support(std::shared_ptr<const ElasticPart> part);
   Eigen::Index size() const { return layout().size(); }
   // κ, Pa/m.
   double contact_stiffness() const { return contact_.stiffness(); }

@@ -15,6 +15,7 @@
 #include "ergo/body/elastic_part.h"
 #include "ergo/body/rest_extension.h"
 #include "ergo/design/contact_pressures.h"
+#include "ergo/design/design_problem.h"
 #include "ergo/design/rest_shape_gradient.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/equilibrium/placement.h"
@@ -156,6 +157,48 @@ TEST_F(SoftRestShape, ScoreGradientMatchesFiniteDifferencesThroughTheEquilibrium
     worst = std::max(worst, best);
   }
   std::printf("[ FD       ] soft support rest-shape design gradient: worst %.2e\n", worst);
+}
+
+// The same through DesignProblem, the optimisers' objective: the design moves the foam top's
+// rest positions (one coordinate triple per designed vertex), each evaluation places the
+// cube afresh on the foam at rest and solves; ∇φ against central differences of φ.
+TEST_F(SoftRestShape, DesignProblemGradientMatchesFiniteDifferences) {
+  DesignOptions options;
+  options.equilibrium = equilibrium_;
+  options.soft_support = foam_;
+  const Eigen::VectorXi& boundary = foam_->boundary().surface_to_tet;
+  options.active.assign(boundary.size(), false);
+  for (Eigen::Index i = 0; i < boundary.size(); ++i) options.active[i] = designed_[boundary[i]];
+  const TriMesh& surface = foam_->boundary().surface;
+  const BodyState start =
+      PlaceAboveSupport(*body_, RestState(*body_), Support(surface, "foam"), 1e-3).state;
+  DesignProblem problem(*body_, surface, start, options);
+  const Eigen::VectorXd x0 = problem.InitialDesign();
+  const DesignEvaluation at = problem.Evaluate(x0, true);
+  ASSERT_TRUE(at.ok) << at.message;
+  ASSERT_GT(at.gradient.norm(), 0);
+  std::mt19937 rng(17);
+  std::normal_distribution<double> normal;
+  double worst = 0;
+  const int trials = testing::SanitizedBuild() ? 1 : 3;
+  for (int trial = 0; trial < trials; ++trial) {
+    Eigen::VectorXd d(x0.size());
+    for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = normal(rng);
+    if (trial == 0) d = -at.gradient;
+    d.normalize();
+    const double analytic = at.gradient.dot(d);
+    double best = INFINITY;
+    for (double h : {1e-6, 3e-7}) {
+      const DesignEvaluation plus = problem.Evaluate(x0 + h * d, false);
+      const DesignEvaluation minus = problem.Evaluate(x0 - h * d, false);
+      ASSERT_TRUE(plus.ok && minus.ok) << plus.message << minus.message;
+      best = std::min(best,
+                      std::abs((plus.phi - minus.phi) / (2 * h) - analytic) / std::abs(analytic));
+    }
+    EXPECT_LT(best, 1e-4) << "trial " << trial;
+    worst = std::max(worst, best);
+  }
+  std::printf("[ FD       ] DesignProblem on a soft support: worst %.2e\n", worst);
 }
 
 }  // namespace
