@@ -396,6 +396,30 @@ TEST(ToolsOptimize, ATimeBudgetAloneHasNoEvaluationCap) {
   fs::remove_all(dir);
 }
 
+// --support_model=soft: the bump plate becomes foam, the design moves its rest shape, and the
+// optimised rest shape is the printed part; the summary says which support model ran.
+TEST(ToolsOptimize, ASoftSupportsRestShapeIsOptimised) {
+  const std::string dir = testing::MakeScratchDir("soft_optimize");
+  const std::vector<std::string> args = {"--scenario=bump",
+                                         "--bump_edge_length=0.015",
+                                         "--robust_placements=1",
+                                         "--plot=false",
+                                         "--placement_checks=false",
+                                         "--max_evals=4",
+                                         "--support_model=soft",
+                                         "--support_youngs_modulus=5e4",
+                                         "--soft_support_edge_length=0.01",
+                                         "--soft_support_base_edge_length=0.02",
+                                         "--out=" + dir + "/soft"};
+  ASSERT_TRUE(RunTool(args, dir + "/soft.log").ok()) << Read(dir + "/soft.log");
+  const Json summary = ReadJsonFile(dir + "/soft/summary.json");
+  EXPECT_GT(GetNumber(summary, "evaluations", "summary"), 0.0);
+  EXPECT_TRUE(fs::exists(dir + "/soft/support_optimized.stl"));
+  EXPECT_NE(Read(dir + "/soft.log").find("soft support"), std::string::npos)
+      << Read(dir + "/soft.log");
+  fs::remove_all(dir);
+}
+
 // The default optimiser is nlopt-lbfgs, ceres-lbfgs at the paper presets (the paper-resolution
 // comparison in the README), and what --optimizer names in either case.
 TEST(ToolsOptimize, ThePaperPresetDefaultsToCeresLbfgsUnlessAnOptimizerIsNamed) {

@@ -168,7 +168,7 @@ TEST_F(ToolsSimulate, MaxSecondsStopsCleanlyWithExitOneAndWritesNothing) {
 TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
   const std::string soft =
       "--contact_stiffness=1e8 --support_model=soft --support_youngs_modulus=2e4 "
-      "--support_edge_length=0.02 --support_base_edge_length=0.05";
+      "--soft_support_edge_length=0.02 --soft_support_base_edge_length=0.05";
   const CommandResult run = RunCommand(Simulate(soft, "soft"));
   ASSERT_EQ(run.status, 0) << run.output;
   for (const char* file : {"body_deformed.vtu", "support.vtu", "support_solid.vtu", "summary.json"})
@@ -203,11 +203,11 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
   bad = RunCommand(Simulate("--support_model=soft --support_poisson_ratio=0.5", "bad_soft2"));
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.output.find("--support_poisson_ratio"), std::string::npos) << bad.output;
-  bad = RunCommand(
-      Simulate("--support_model=soft --support_edge_length=0.03 --support_base_edge_length=0.01",
-               "bad_soft3"));
+  bad = RunCommand(Simulate(
+      "--support_model=soft --soft_support_edge_length=0.03 --soft_support_base_edge_length=0.01",
+      "bad_soft3"));
   EXPECT_EQ(bad.status, 2);
-  EXPECT_NE(bad.output.find("--support_base_edge_length"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("--soft_support_base_edge_length"), std::string::npos) << bad.output;
 }
 
 }  // namespace

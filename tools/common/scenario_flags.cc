@@ -8,6 +8,7 @@
 #include "ergo/mesh/input_error.h"
 #include "problems/bump_scenario.h"
 #include "tools/common/scene_flags.h"
+#include "tools/common/soft_support_flags.h"
 
 DEFINE_string(scenario, "bump",
               "the design scenario: chair, shoe, mouse (paper §5; --preset, --negative_image) or "
@@ -71,8 +72,12 @@ std::string ScenarioNames() {
 }
 
 Scenario ScenarioFromFlags() {
-  for (const ScenarioEntry& entry : Table())
-    if (FLAGS_scenario == entry.name) return entry.make();
+  for (const ScenarioEntry& entry : Table()) {
+    if (FLAGS_scenario != entry.name) continue;
+    Scenario scenario = entry.make();
+    ApplySoftSupportFlags(&scenario);  // --support_model=soft: the design moves foam
+    return scenario;
+  }
   throw InputError("--scenario", "", "unknown scenario \"" + FLAGS_scenario + "\"",
                    "use one of: " + ScenarioNames());
 }

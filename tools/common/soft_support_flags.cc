@@ -11,6 +11,7 @@
 #include "ergo/body/tissue_material.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
+#include "problems/soft_support_scenario.h"
 #include "tools/common/flag_checks.h"
 
 DEFINE_string(support_model, "rigid",
@@ -25,9 +26,9 @@ DEFINE_double(support_density, 0,
 DEFINE_string(support_tets, "",
               "soft support: its tet mesh (.msh, or a TetGen .node/.ele pair, in --unit) instead "
               "of meshing the support surface; the vertices on its lowest plane are held");
-DEFINE_double(support_edge_length, 0.01,
+DEFINE_double(soft_support_edge_length, 0.01,
               "soft support meshed from the surface: tet edge length at its top, m");
-DEFINE_double(support_base_edge_length, 0.03,
+DEFINE_double(soft_support_base_edge_length, 0.03,
               "soft support meshed from the surface: tet edge length at its base, m (>= the "
               "top's)");
 
@@ -68,13 +69,14 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
         (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
     held = BottomVertices(mesh, 1e-6 * size);
   } else {
-    RequireInRange("support_edge_length", FLAGS_support_edge_length, 1e-4, 1.0,
+    RequireInRange("soft_support_edge_length", FLAGS_soft_support_edge_length, 1e-4, 1.0,
                    "metres, e.g. 0.01");
-    RequireInRange("support_base_edge_length", FLAGS_support_base_edge_length,
-                   FLAGS_support_edge_length, 1.0, "metres, at least --support_edge_length");
+    RequireInRange("soft_support_base_edge_length", FLAGS_soft_support_base_edge_length,
+                   FLAGS_soft_support_edge_length, 1.0,
+                   "metres, at least --soft_support_edge_length");
     SupportSolidOptions options;
-    options.top_edge_length = FLAGS_support_edge_length;
-    options.base_edge_length = FLAGS_support_base_edge_length;
+    options.top_edge_length = FLAGS_soft_support_edge_length;
+    options.base_edge_length = FLAGS_soft_support_base_edge_length;
     options.progress = [](const std::string& line) { std::cerr << line << "\n"; };
     SupportSolid solid = MeshSupportSolid(surface, options, source);
     mesh = std::move(solid.mesh);
@@ -89,6 +91,14 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
       ElasticPart::Create(std::move(mesh), std::move(held), std::move(material), options, name));
   *contact_surface = part->boundary().surface;
   return part;
+}
+
+void ApplySoftSupportFlags(Scenario* scenario) {
+  if (!SoftSupportRequested()) return;
+  TriMesh boundary;
+  auto part = SoftSupportFromFlags(scenario->support, "--scenario=" + scenario->name + " support",
+                                   LengthUnit::kMetre, scenario->body->gravity(), &boundary);
+  UseSoftSupport(std::move(part), scenario);
 }
 
 std::string DescribeSoftSupportFlags() {

@@ -11,6 +11,7 @@
 #include "ergo/body/elastic_part.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/tri_mesh.h"
+#include "problems/scenario.h"
 
 namespace ergo {
 
@@ -21,14 +22,19 @@ bool SoftSupportRequested();
 const std::string& SoftSupportTetFile();
 
 // The soft support for a support surface `surface` read from `source` (meshed with
-// --support_edge_length at the top and --support_base_edge_length at the base), or the tet
-// mesh --support_tets in `unit` when given (then `surface` may be empty). `gravity` is the
+// --soft_support_edge_length at the top and --soft_support_base_edge_length at the base), or the
+// tet mesh --support_tets in `unit` when given (then `surface` may be empty). `gravity` is the
 // scene's, used when --support_density > 0. *contact_surface receives the part's boundary
 // at rest: the support the body touches. Throws InputError naming the flag or file at fault.
 std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
                                                         const std::string& source, LengthUnit unit,
                                                         const Eigen::Vector3d& gravity,
                                                         TriMesh* contact_surface);
+
+// With --support_model=soft, the scenario's support as foam from these flags (meshed from
+// its surface, or --support_tets in metres), the design moving its rest shape
+// (problems/soft_support_scenario.h); nothing otherwise.
+void ApplySoftSupportFlags(Scenario* scenario);
 
 // The soft support's flags for summary.json (model, modulus, ratio, density, mesh source).
 std::string DescribeSoftSupportFlags();
