@@ -9,25 +9,9 @@
 
 #include "ergo/material/rest_shape_derivative.h"
 #include "ergo/mesh/input_error.h"
+#include "ergo/mesh/sparse_index.h"
 
 namespace ergo {
-namespace {
-
-TetPositions Corners(const Vertices& positions, const Eigen::RowVector4i& tet) {
-  TetPositions x;
-  for (int k = 0; k < 4; ++k) x.col(k) = positions.row(tet[k]).transpose();
-  return x;
-}
-
-int IndexOf(const SparseMatrix& m, int row, int col) {
-  const int* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
-  const int* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
-  const int* it = std::lower_bound(begin, end, row);
-  CHECK(it != end && *it == row) << "entry (" << row << "," << col << ") not in the pattern";
-  return static_cast<int>(it - m.innerIndexPtr());
-}
-
-}  // namespace
 
 ElasticPart ElasticPart::Create(TetMesh rest, std::vector<bool> held, TissueMaterial material,
                                 const ElasticPartOptions& options, const std::string& name) {
@@ -121,7 +105,7 @@ void ElasticPart::BuildPattern() {
         slot = {-1, -1, -1};
         const int fa = free_index_[tets(t, a)], fb = free_index_[tets(t, b)];
         if (fa < 0 || fb < 0 || fb < fa) continue;
-        for (int c = 0; c < 3; ++c) slot[c] = IndexOf(pattern_, 3 * fa, 3 * fb + c);
+        for (int c = 0; c < 3; ++c) slot[c] = ValueIndex(pattern_, 3 * fa, 3 * fb + c);
       }
     }
   }
@@ -146,7 +130,7 @@ Eigen::VectorXd ElasticPart::FreeComponents(const Vertices& vertex_field) const 
 double ElasticPart::Energy(const Vertices& positions) const {
   double energy = 0;
   for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t)
-    energy += kernel_->Energy(t, Corners(positions, rest_.tets.row(t)));
+    energy += kernel_->Energy(t, TetCorners(positions, rest_.tets.row(t)));
   for (Eigen::Index v = 0; v < positions.rows(); ++v)
     energy -= vertex_mass_[v] * options_.gravity.dot(positions.row(v).transpose());
   return energy;
@@ -166,7 +150,7 @@ void ElasticPart::Evaluate(const Vertices& positions, HessianKind kind, bool wit
   double* values = with_hessian ? e.hessian.valuePtr() : nullptr;
   const Tetrahedra& tets = rest_.tets;
   for (Eigen::Index t = 0; t < tets.rows(); ++t) {
-    const TetPositions x = Corners(positions, tets.row(t));
+    const TetPositions x = TetCorners(positions, tets.row(t));
     Vector12d gradient;
     Matrix12d hessian;
     e.energy += with_hessian ? kernel_->EnergyGradientHessian(t, x, kind, &gradient, &hessian)
@@ -195,7 +179,7 @@ Eigen::VectorXd ElasticPart::VonMisesStress(const Vertices& positions) const {
   Eigen::VectorXd out(rest_.tets.rows());
   for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t) {
     const Eigen::Matrix3d f =
-        DeformationGradient(kernel_->rest(t), Corners(positions, rest_.tets.row(t)));
+        DeformationGradient(kernel_->rest(t), TetCorners(positions, rest_.tets.row(t)));
     const double j = f.determinant();
     const Eigen::Matrix3d sigma = kernel_->material(t).FirstPiola(f) * f.transpose() / j;
     const Eigen::Matrix3d deviator = sigma - sigma.trace() / 3 * Eigen::Matrix3d::Identity();
@@ -207,9 +191,9 @@ Eigen::VectorXd ElasticPart::VonMisesStress(const Vertices& positions) const {
 Eigen::VectorXd ElasticPart::VolumeChange(const Vertices& positions) const {
   Eigen::VectorXd out(rest_.tets.rows());
   for (Eigen::Index t = 0; t < rest_.tets.rows(); ++t)
-    out[t] =
-        DeformationGradient(kernel_->rest(t), Corners(positions, rest_.tets.row(t))).determinant() -
-        1;
+    out[t] = DeformationGradient(kernel_->rest(t), TetCorners(positions, rest_.tets.row(t)))
+                 .determinant() -
+             1;
   return out;
 }
 
@@ -222,8 +206,8 @@ Vertices ElasticPart::RestShapeAdjoint(const Vertices& positions, const Vertices
     for (int k = 0; k < 4; ++k)
       if (!held_[tets(t, k)]) z_element.segment<3>(3 * k) = z.row(tets(t, k)).transpose();
     if (z_element.squaredNorm() == 0) continue;
-    const TetPositions rest = Corners(rest_.vertices, tets.row(t));
-    const TetPositions x = Corners(positions, tets.row(t));
+    const TetPositions rest = TetCorners(rest_.vertices, tets.row(t));
+    const TetPositions x = TetCorners(positions, tets.row(t));
     Vector12d change =
         ElementForceRestJacobian(kernel_->material(t), rest, x).transpose() * z_element;
     if (options_.density > 0) {

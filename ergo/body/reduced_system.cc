@@ -1,4 +1,5 @@
 #include "ergo/body/reduced_system.h"
+#include "ergo/mesh/sparse_index.h"
 
 #include <algorithm>
 #include <limits>
@@ -24,21 +25,6 @@ Eigen::Matrix<double, 3, 6> FullCoreJacobian(const Eigen::Vector3d& h) {
   b.leftCols<3>().setIdentity();
   b.rightCols<3>() << 0, h.z(), -h.y(), -h.z(), 0, h.x(), h.y(), -h.x(), 0;
   return b;
-}
-
-TetPositions Corners(const Vertices& positions, const Eigen::RowVector4i& tet) {
-  TetPositions x;
-  for (int k = 0; k < 4; ++k) x.col(k) = positions.row(tet[k]).transpose();
-  return x;
-}
-
-// Value index of entry (row, col) in a compressed column matrix (must exist).
-int IndexOf(const SparseMatrix& m, int row, int col) {
-  const int* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
-  const int* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
-  const int* it = std::lower_bound(begin, end, row);
-  CHECK(it != end && *it == row) << "entry (" << row << "," << col << ") not in the pattern";
-  return static_cast<int>(it - m.innerIndexPtr());
 }
 
 }  // namespace
@@ -104,7 +90,7 @@ void ReducedSystem::BuildPattern() {
       plan.block[p] = {-1, -1, -1};
       if (da < 0 || db < 0) continue;
       const int row = std::min(da, db), col = std::max(da, db);
-      for (int c = 0; c < 3; ++c) plan.block[p][c] = IndexOf(pattern_, row, col + c);
+      for (int c = 0; c < 3; ++c) plan.block[p][c] = ValueIndex(pattern_, row, col + c);
     }
     if (has_attached) plan.core_slot = core_slots_++;
   }
@@ -112,12 +98,12 @@ void ReducedSystem::BuildPattern() {
   for (size_t f = 0; f < touches_core.size(); ++f) {
     if (!touches_core[f]) continue;
     for (int j = 0; j < core_count; ++j)
-      free_core_index_[f][j] = IndexOf(pattern_, 3 * static_cast<int>(f), core_offset + j);
+      free_core_index_[f][j] = ValueIndex(pattern_, 3 * static_cast<int>(f), core_offset + j);
   }
   for (auto& row : core_index_) row.fill(-1);
   for (int i = 0; i < core_count; ++i)
     for (int j = i; j < core_count; ++j)
-      core_index_[i][j] = IndexOf(pattern_, core_offset + i, core_offset + j);
+      core_index_[i][j] = ValueIndex(pattern_, core_offset + i, core_offset + j);
 }
 
 void ReducedSystem::Colour() {
@@ -178,7 +164,7 @@ double ReducedSystem::Energy(const BodyState& state, const Vertices& positions) 
   std::vector<double> element(static_cast<size_t>(tets.rows()));
 #pragma omp parallel for schedule(static) if (tets.rows() >= Eigen::Index(kMinParallelColour))
   for (Eigen::Index t = 0; t < tets.rows(); ++t)
-    element[t] = kernel_.Energy(t, Corners(positions, tets.row(t)));
+    element[t] = kernel_.Energy(t, TetCorners(positions, tets.row(t)));
   double energy = 0;
   for (double e : element) energy += e;  // fixed order: deterministic
   const Eigen::Vector3d& g = body_.gravity();
@@ -213,7 +199,7 @@ void ReducedSystem::Evaluate(const BodyState& state, const Vertices& positions, 
     for (size_t i = 0; i < colour.size(); ++i) {
       const int t = colour[i];
       const ElementPlan& plan = plans_[t];
-      const TetPositions x = Corners(positions, tets.row(t));
+      const TetPositions x = TetCorners(positions, tets.row(t));
       Vector12d gradient;
       Matrix12d hessian;
       element_energy[t] = with_hessian
@@ -285,7 +271,7 @@ void ReducedSystem::AddVertexHessian(const BodyState& state, const Vertices& pos
     double* values = evaluation->hessian.valuePtr();
     // Diagonal block of free vertex f: upper triangle of columns 3f..3f+2.
     for (int c = 0; c < 3; ++c) {
-      const int base = IndexOf(evaluation->hessian, 3 * f, 3 * f + c);
+      const int base = ValueIndex(evaluation->hessian, 3 * f, 3 * f + c);
       for (int r = 0; r <= c; ++r) values[base + r] += block(r, c);
     }
     return;
@@ -318,7 +304,7 @@ void ReducedSystem::AddVertexBlockHessian(const BodyState& state, const Vertices
         // Upper triangle: each unordered free pair once (from its row-major side).
         if (fa > fb) continue;
         for (int c = 0; c < 3; ++c) {
-          const int base = IndexOf(evaluation->hessian, 3 * fa, 3 * fb + c);
+          const int base = ValueIndex(evaluation->hessian, 3 * fa, 3 * fb + c);
           const int rows = fa == fb ? c + 1 : 3;
           for (int r = 0; r < rows; ++r) values[base + r] += h(r, c);
         }
@@ -391,7 +377,7 @@ void ReducedSystem::AddScaledMass(double alpha, const BodyState& state, const Ve
   for (Eigen::Index f = 0; f < free.size(); ++f) {
     const double m = alpha * body_.vertex_mass()[free[f]];
     for (int c = 0; c < 3; ++c)
-      values[IndexOf(*hessian, 3 * static_cast<int>(f) + c, 3 * static_cast<int>(f) + c)] += m;
+      values[ValueIndex(*hessian, 3 * static_cast<int>(f) + c, 3 * static_cast<int>(f) + c)] += m;
   }
   Matrix6d core = Matrix6d::Zero();
   for (Eigen::Index a : body_.attached_vertices()) {

@@ -13,6 +13,13 @@
 
 namespace ergo {
 
+// The corner positions of `tet` (columns = corners).
+inline TetPositions TetCorners(const Vertices& positions, const Eigen::RowVector4i& tet) {
+  TetPositions x;
+  for (int k = 0; k < 4; ++k) x.col(k) = positions.row(tet[k]).transpose();
+  return x;
+}
+
 // Rest data and material of every tet, precomputed once per part.
 class TetKernel {
  public:

@@ -293,68 +293,66 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   out.phi = out.zeta + options_.gamma * out.psi;
   if (!std::isfinite(out.phi)) return fail("the objective is not finite");
 
-  if (with_gradient && options_.soft_support) {
-    // dζ/dX at every deformed position fixed (rest_shape_gradient.h), pulled back through the
-    // interior's extension to the designed boundary and through the design space.
+  if (with_gradient) {
+    // dζ with respect to the support surface's vertices (the design's), then through the
+    // design space.
     mark = Clock::now();
-    const RestShapeGradient rest = SoftSupportRestGradient(
-        potential, state, e, out.pressures, options_.score_support_side, &adjoint_cholesky_);
-    ++timing.adjoint_factorizations;
-    if (!rest.ok) {
-      timing.adjoint_seconds += SecondsSince(mark);
-      return fail(rest.message);
-    }
-    const Vertices designed = rest_extension_->PullBack(rest.gradient);
-    const Eigen::VectorXi& surface_to_part = options_.soft_support->boundary().surface_to_tet;
-    Vertices d_support(surface_to_part.size(), 3);
-    for (Eigen::Index i = 0; i < surface_to_part.size(); ++i)
-      d_support.row(i) = designed.row(surface_to_part[i]);
-    out.zeta_gradient = parameterization_.PullBack(d_support);
-    timing.adjoint_seconds += SecondsSince(mark);
-    mark = Clock::now();
-    out.psi_gradient = parameterization_.PullBack(psi.gradient);
-    timing.psi_seconds += SecondsSince(mark);
-    out.gradient = out.zeta_gradient + options_.gamma * out.psi_gradient;
-    ++counters_->gradients;
-  } else if (with_gradient) {
-    mark = Clock::now();
-    ScorePartials partials =
-        PressureScorePartials(out.pressures, body_, options_.score_support_side);
-    // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
-    const Eigen::VectorXd rhs =
-        potential.system().ReduceVertexGradient(state, e.positions, partials.body);
-    if (rhs.squaredNorm() > 0) {
-      // The adjoint system with the exact K̂ at y*: conjugate gradients preconditioned by the
-      // Newton factor (of K̂ at the last iterate, next to y*), else a fresh factorisation.
-      Eigen::VectorXd z;
-      const SparseCholesky& newton_factor = solver_.factor();
-      if (newton_factor.factorized()) {
-        const PcgResult cg =
-            PreconditionedConjugateGradient(e.hessian(), newton_factor, rhs, 1e-12, 30);
-        timing.adjoint_pcg_iterations += cg.iterations;
-        if (cg.converged) z = cg.x;
+    Vertices d_support;
+    if (options_.soft_support) {
+      // dζ/dX at every deformed position fixed (rest_shape_gradient.h), pulled back through
+      // the interior's extension to the designed boundary.
+      const RestShapeGradient rest = SoftSupportRestGradient(
+          potential, state, e, out.pressures, options_.score_support_side, &adjoint_cholesky_);
+      ++timing.adjoint_factorizations;
+      if (!rest.ok) {
+        timing.adjoint_seconds += SecondsSince(mark);
+        return fail(rest.message);
       }
-      if (z.size() == 0) {
-        const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.hessian());
-        ++timing.adjoint_factorizations;
-        if (!factor.ok) {
-          timing.adjoint_seconds += SecondsSince(mark);
-          return fail("the exact Hessian at the equilibrium is not positive definite (" +
-                      factor.message +
-                      "): the equilibrium is not a strict minimum, so dy/dx is undefined");
+      const Vertices designed = rest_extension_->PullBack(rest.gradient);
+      const Eigen::VectorXi& surface_to_part = options_.soft_support->boundary().surface_to_tet;
+      d_support.resize(surface_to_part.size(), 3);
+      for (Eigen::Index i = 0; i < surface_to_part.size(); ++i)
+        d_support.row(i) = designed.row(surface_to_part[i]);
+    } else {
+      ScorePartials partials =
+          PressureScorePartials(out.pressures, body_, options_.score_support_side);
+      // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
+      const Eigen::VectorXd rhs =
+          potential.system().ReduceVertexGradient(state, e.positions, partials.body);
+      if (rhs.squaredNorm() > 0) {
+        // The adjoint system with the exact K̂ at y*: conjugate gradients preconditioned by
+        // the Newton factor (of K̂ at the last iterate, next to y*), else a fresh
+        // factorisation.
+        Eigen::VectorXd z;
+        const SparseCholesky& newton_factor = solver_.factor();
+        if (newton_factor.factorized()) {
+          const PcgResult cg =
+              PreconditionedConjugateGradient(e.hessian(), newton_factor, rhs, 1e-12, 30);
+          timing.adjoint_pcg_iterations += cg.iterations;
+          if (cg.converged) z = cg.x;
         }
-        z = adjoint_cholesky_.Solve(rhs);
+        if (z.size() == 0) {
+          const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.hessian());
+          ++timing.adjoint_factorizations;
+          if (!factor.ok) {
+            timing.adjoint_seconds += SecondsSince(mark);
+            return fail("the exact Hessian at the equilibrium is not positive definite (" +
+                        factor.message +
+                        "): the equilibrium is not a strict minimum, so dy/dx is undefined");
+          }
+          z = adjoint_cholesky_.Solve(rhs);
+        }
+        const Vertices velocity =
+            potential.system().layout().VertexVelocity(body_, state, e.positions, z);
+        const SupportShapeGradient contraction = ResidualShapeContraction(
+            out.pressures.contacts, body_, out.pressures.support_areas, velocity);
+        partials.support.position -= contraction.position;
+        partials.support.area -= contraction.area;
       }
-      const Vertices velocity =
-          potential.system().layout().VertexVelocity(body_, state, e.positions, z);
-      const SupportShapeGradient contraction = ResidualShapeContraction(
-          out.pressures.contacts, body_, out.pressures.support_areas, velocity);
-      partials.support.position -= contraction.position;
-      partials.support.area -= contraction.area;
+      const TriMesh support_mesh{support_positions, initial_support_.triangles};
+      d_support =
+          partials.support.position + ChainSupportAreas(partials.support.area, support_mesh);
     }
-    const TriMesh support_mesh{support_positions, initial_support_.triangles};
-    const Vertices d_support =
-        partials.support.position + ChainSupportAreas(partials.support.area, support_mesh);
     out.zeta_gradient = parameterization_.PullBack(d_support);
     timing.adjoint_seconds += SecondsSince(mark);
     mark = Clock::now();

@@ -15,17 +15,13 @@
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/primitives.h"
 #include "ergo/mesh/sparse_cholesky.h"
+#include "tests/support/dense_symmetric.h"
 #include "tests/support/finite_difference.h"
 
 namespace ergo {
 namespace {
 
-Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
-  const Eigen::MatrixXd u = Eigen::MatrixXd(upper);
-  Eigen::MatrixXd full = u + u.transpose();
-  full.diagonal() = u.diagonal();
-  return full;
-}
+using testing::DenseSymmetric;
 
 // Vertices on the box's boundary (within 1e-9 of a face).
 std::vector<bool> OnBoundary(const TetMesh& mesh, const Eigen::Vector3d& lo,

@@ -12,10 +12,13 @@
 #include "ergo/body/body_state.h"
 #include "ergo/mesh/sparse_cholesky.h"
 #include "tests/support/body/body_fixtures.h"
+#include "tests/support/dense_symmetric.h"
 #include "tests/support/finite_difference.h"
 
 namespace ergo {
 namespace {
+
+using testing::DenseSymmetric;
 
 // A 0.1 m hollow cube of soft tissue, deformed randomly by ~1 % of its size and with the
 // core turned and moved, so that every term (elastic, gravity, wrench, lever arms) is on.
@@ -39,14 +42,6 @@ Deformed MakeDeformed(const CoreLock& lock, unsigned seed) {
   d.state.rotation = RotationExp(Eigen::Vector3d(0.02, -0.03, 0.01));
   d.state.torque_angle = Eigen::Vector3d(0.02, -0.03, 0.01);
   return d;
-}
-
-// Dense symmetric matrix from the upper-triangular storage.
-Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
-  const Eigen::MatrixXd u = Eigen::MatrixXd(upper);
-  Eigen::MatrixXd full = u + u.transpose();
-  full.diagonal() = u.diagonal();
-  return full;
 }
 
 struct Evaluated {

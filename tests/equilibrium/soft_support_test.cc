@@ -19,17 +19,13 @@
 #include "ergo/equilibrium/total_potential.h"
 #include "ergo/mesh/primitives.h"
 #include "tests/support/body/body_fixtures.h"
+#include "tests/support/dense_symmetric.h"
 #include "tests/support/finite_difference.h"
 
 namespace ergo {
 namespace {
 
-Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
-  const Eigen::MatrixXd u = Eigen::MatrixXd(upper);
-  Eigen::MatrixXd full = u + u.transpose();
-  full.diagonal() = u.diagonal();
-  return full;
-}
+using testing::DenseSymmetric;
 
 // A foam part on `mesh` with the vertices at or below `base_y` held.
 std::shared_ptr<const ElasticPart> MakeFoam(const TetMesh& mesh, double base_y, double modulus,

@@ -17,10 +17,13 @@
 #include "ergo/body/core_lock.h"
 #include "ergo/mesh/primitives.h"
 #include "tests/support/body/body_fixtures.h"
+#include "tests/support/dense_symmetric.h"
 #include "tests/support/finite_difference.h"
 
 namespace ergo {
 namespace {
+
+using testing::DenseSymmetric;
 
 struct Scene {
   LayeredBody body;
@@ -50,13 +53,6 @@ Scene MakeScene(unsigned seed) {
   for (Eigen::Index i = 0; i < scene.state.free_displacement.size() / 3; ++i)
     scene.state.free_displacement[3 * i + 1] -= 2e-3;
   return scene;
-}
-
-Eigen::MatrixXd DenseSymmetric(const SparseMatrix& upper) {
-  const Eigen::MatrixXd u = Eigen::MatrixXd(upper);
-  Eigen::MatrixXd full = u + u.transpose();
-  full.diagonal() = u.diagonal();
-  return full;
 }
 
 // κ for about a millimetre of the cube's pressing; α = ½; the support's springs push when

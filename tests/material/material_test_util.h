@@ -12,6 +12,7 @@
 #include <Eigen/LU>
 
 #include "ergo/material/neo_hookean.h"
+#include "ergo/material/tet_element.h"
 
 namespace ergo::material_testing {
 
@@ -144,6 +145,31 @@ inline Matrix9d ReferenceStressDerivative(const NeoHookean& m, const Eigen::Matr
     h.col(col) = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(dp.data());
   }
   return h;
+}
+
+// A well-shaped random tet of edge ~size: a regular tet, randomly rotated and perturbed by
+// 10 % of its size, positively oriented.
+inline TetPositions RandomRestTet(double size, std::mt19937& rng) {
+  TetPositions x;
+  x << 1, -1, -1, 1,  //
+      1, -1, 1, -1,   //
+      1, 1, -1, -1;
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  const Eigen::Matrix3d r = RandomRotation(rng);
+  for (int v = 0; v < 4; ++v) {
+    x.col(v) = r * x.col(v) * (0.5 * size);
+    for (int c = 0; c < 3; ++c) x(c, v) += jitter(rng) * size;
+  }
+  if (SignedTetVolume(x) < 0) x.col(2).swap(x.col(3));
+  return x;
+}
+
+// A tet's 12 coordinates (corner-major) as a vector, and back.
+inline Eigen::Map<const TetPositions> AsPositions(const Eigen::VectorXd& x) {
+  return Eigen::Map<const TetPositions>(x.data());
+}
+inline Eigen::VectorXd AsVector(const TetPositions& x) {
+  return Eigen::Map<const Eigen::Matrix<double, 12, 1>>(x.data());
 }
 
 }  // namespace ergo::material_testing

@@ -18,7 +18,10 @@
 namespace ergo {
 namespace {
 
+using material_testing::AsPositions;
+using material_testing::AsVector;
 using material_testing::DeformationWithStretches;
+using material_testing::RandomRestTet;
 using material_testing::RandomRotation;
 using material_testing::Regime;
 using material_testing::RegimeName;
@@ -28,29 +31,6 @@ using material_testing::StretchesFor;
 // step sweep reach 1e-8–1e-7 of the natural scale; 1e-6 leaves room without hiding a wrong
 // term, which is O(1) of the scale.
 constexpr double kFdTolerance = 1e-6;
-
-TetPositions RandomRestTet(double size, std::mt19937& rng) {
-  TetPositions x;
-  x << 1, -1, -1, 1,  //
-      1, -1, 1, -1,   //
-      1, 1, -1, -1;
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  const Eigen::Matrix3d r = RandomRotation(rng);
-  for (int v = 0; v < 4; ++v) {
-    x.col(v) = r * x.col(v) * (0.5 * size);
-    for (int c = 0; c < 3; ++c) x(c, v) += jitter(rng) * size;
-  }
-  if (SignedTetVolume(x) < 0) x.col(2).swap(x.col(3));
-  return x;
-}
-
-Eigen::Map<const TetPositions> AsPositions(const Eigen::VectorXd& x) {
-  return Eigen::Map<const TetPositions>(x.data());
-}
-
-Eigen::VectorXd AsVector(const TetPositions& x) {
-  return Eigen::Map<const Eigen::Matrix<double, 12, 1>>(x.data());
-}
 
 void CheckRestDerivatives(Regime regime, double size, unsigned seed) {
   double worst_energy = 0, worst_force = 0;

@@ -18,7 +18,10 @@
 namespace ergo {
 namespace {
 
+using material_testing::AsPositions;
+using material_testing::AsVector;
 using material_testing::DeformationWithStretches;
+using material_testing::RandomRestTet;
 using material_testing::RandomRotation;
 using material_testing::Regime;
 using material_testing::RegimeName;
@@ -27,34 +30,9 @@ using material_testing::StretchesFor;
 constexpr double kFdTolerance = 1e-6;  // justified in neo_hookean_test.cc
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
-// A well-shaped random tet of edge ~size around `centre`: a regular tet, randomly rotated
-// and perturbed by 10 % of its size.
-TetPositions RandomRestTet(double size, std::mt19937& rng) {
-  TetPositions x;
-  x << 1, -1, -1, 1,  //
-      1, -1, 1, -1,   //
-      1, 1, -1, -1;
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  const Eigen::Matrix3d r = RandomRotation(rng);
-  for (int v = 0; v < 4; ++v) {
-    x.col(v) = r * x.col(v) * (0.5 * size);
-    for (int c = 0; c < 3; ++c) x(c, v) += jitter(rng) * size;
-  }
-  if (SignedTetVolume(x) < 0) x.col(2).swap(x.col(3));
-  return x;
-}
-
 // x_v = F X_v + t: the deformed tet whose deformation gradient is exactly F.
 TetPositions Deform(const TetPositions& rest, const Eigen::Matrix3d& f, const Eigen::Vector3d& t) {
   return (f * rest).colwise() + t;
-}
-
-Eigen::Map<const TetPositions> AsPositions(const Eigen::VectorXd& x) {
-  return Eigen::Map<const TetPositions>(x.data());
-}
-
-Eigen::VectorXd AsVector(const TetPositions& x) {
-  return Eigen::Map<const Eigen::Matrix<double, 12, 1>>(x.data());
 }
 
 // d vec(F) / dx as a dense 9x12 matrix, for checking the structured maps.
