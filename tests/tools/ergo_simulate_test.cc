@@ -196,6 +196,26 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
                  *dir_ + "/soft_tets");
   ASSERT_EQ(tets.status, 0) << tets.output;
   EXPECT_TRUE(fs::exists(*dir_ + "/soft_tets/support_solid.vtu"));
+  // Its held vertices given as a list (the bottom plane's, and a bad index refused by line).
+  {
+    std::ofstream held(*dir_ + "/held.txt");
+    held << "# the slab's bottom\n";
+    for (Eigen::Index v = 0; v < slab.vertices.rows(); ++v)
+      if (slab.vertices(v, 1) < -110 + 1e-9) held << v << "\n";
+    std::ofstream bad(*dir_ + "/held_bad.txt");
+    bad << "0 1\n2 99999\n";
+  }
+  const std::string with_tets = "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
+                                "/ball --support_tets=" + *dir_ +
+                                "/slab_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz "
+                                "--contact_stiffness=1e8 --support_model=soft ";
+  const CommandResult listed =
+      RunCommand(with_tets + "--support_held=" + *dir_ + "/held.txt --out=" + *dir_ + "/soft_held");
+  ASSERT_EQ(listed.status, 0) << listed.output;
+  const CommandResult refused = RunCommand(with_tets + "--support_held=" + *dir_ +
+                                           "/held_bad.txt --out=" + *dir_ + "/soft_bad");
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("held_bad.txt:line 2"), std::string::npos) << refused.output;
 
   CommandResult bad = RunCommand(Simulate("--support_model=foam", "bad_soft1"));
   EXPECT_EQ(bad.status, 2);

@@ -72,6 +72,7 @@ std::string ScenarioNames() {
 }
 
 Scenario ScenarioFromFlags() {
+  CheckSoftSupportFlags();  // before the scene is built
   for (const ScenarioEntry& entry : Table()) {
     if (FLAGS_scenario != entry.name) continue;
     Scenario scenario = entry.make();

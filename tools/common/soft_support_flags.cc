@@ -1,9 +1,12 @@
 #include "tools/common/soft_support_flags.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include <gflags/gflags.h>
 
@@ -11,6 +14,7 @@
 #include "ergo/body/tissue_material.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/text_reader.h"
 #include "problems/soft_support_scenario.h"
 #include "tools/common/flag_checks.h"
 
@@ -26,6 +30,9 @@ DEFINE_double(support_density, 0,
 DEFINE_string(support_tets, "",
               "soft support: its tet mesh (.msh, or a TetGen .node/.ele pair, in --unit) instead "
               "of meshing the support surface; the vertices on its lowest plane are held");
+DEFINE_string(support_held, "",
+              "soft support from --support_tets: a text file of the held vertices' 0-based "
+              "indices (whitespace-separated, # comments) instead of its lowest plane");
 DEFINE_double(soft_support_edge_length, 0.01,
               "soft support meshed from the surface: tet edge length at its top, m");
 DEFINE_double(soft_support_base_edge_length, 0.03,
@@ -33,6 +40,32 @@ DEFINE_double(soft_support_base_edge_length, 0.03,
               "top's)");
 
 namespace ergo {
+
+namespace {
+
+// The held-vertex file of --support_held: indices into the tet mesh, each checked.
+std::vector<bool> ReadHeldVertices(const std::string& path, Eigen::Index vertex_count) {
+  const std::string text = BytesToText(ReadFileBytes(path));
+  TextReader reader(path, text);
+  std::vector<bool> held(static_cast<size_t>(vertex_count), false);
+  std::vector<std::string_view> tokens;
+  while (reader.NextTokens('#', &tokens)) {
+    for (std::string_view token : tokens) {
+      const std::string word(token);
+      char* end = nullptr;
+      const long index = std::strtol(word.c_str(), &end, 10);
+      if (end == word.c_str() || *end != '\0' || index < 0 || index >= vertex_count) {
+        reader.Fail("'" + word + "' is not a vertex index of the support's tet mesh (0 to " +
+                        std::to_string(vertex_count - 1) + ")",
+                    "list 0-based indices of the vertices to hold");
+      }
+      held[index] = true;
+    }
+  }
+  return held;
+}
+
+}  // namespace
 
 bool SoftSupportRequested() {
   if (FLAGS_support_model != "rigid" && FLAGS_support_model != "soft") {
@@ -44,10 +77,8 @@ bool SoftSupportRequested() {
 
 const std::string& SoftSupportTetFile() { return FLAGS_support_tets; }
 
-std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
-                                                        const std::string& source, LengthUnit unit,
-                                                        const Eigen::Vector3d& gravity,
-                                                        TriMesh* contact_surface) {
+void CheckSoftSupportFlags() {
+  if (!SoftSupportRequested()) return;
   RequireInRange("support_youngs_modulus", FLAGS_support_youngs_modulus, 1.0, 1e11,
                  "Pa, e.g. 5e4 for a seat foam");
   if (!(FLAGS_support_poisson_ratio > -1 && FLAGS_support_poisson_ratio < 0.5)) {
@@ -56,6 +87,18 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
                      "e.g. 0.3 for a foam");
   }
   RequireInRange("support_density", FLAGS_support_density, 0, 1e4, "kg/m³, e.g. 50, or 0");
+  RequireInRange("soft_support_edge_length", FLAGS_soft_support_edge_length, 1e-4, 1.0,
+                 "metres, e.g. 0.01");
+  RequireInRange("soft_support_base_edge_length", FLAGS_soft_support_base_edge_length,
+                 FLAGS_soft_support_edge_length, 1.0,
+                 "metres, at least --soft_support_edge_length");
+}
+
+std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
+                                                        const std::string& source, LengthUnit unit,
+                                                        const Eigen::Vector3d& gravity,
+                                                        TriMesh* contact_surface) {
+  CheckSoftSupportFlags();
   TetMesh mesh;
   std::vector<bool> held;
   std::string name = source;
@@ -67,13 +110,9 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
       if (TetVolume(mesh, t) < 0) std::swap(mesh.tets(t, 2), mesh.tets(t, 3));
     const double size =
         (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
-    held = BottomVertices(mesh, 1e-6 * size);
+    held = FLAGS_support_held.empty() ? BottomVertices(mesh, 1e-6 * size)
+                                      : ReadHeldVertices(FLAGS_support_held, mesh.vertices.rows());
   } else {
-    RequireInRange("soft_support_edge_length", FLAGS_soft_support_edge_length, 1e-4, 1.0,
-                   "metres, e.g. 0.01");
-    RequireInRange("soft_support_base_edge_length", FLAGS_soft_support_base_edge_length,
-                   FLAGS_soft_support_edge_length, 1.0,
-                   "metres, at least --soft_support_edge_length");
     SupportSolidOptions options;
     options.top_edge_length = FLAGS_soft_support_edge_length;
     options.base_edge_length = FLAGS_soft_support_base_edge_length;

@@ -1,6 +1,7 @@
 // --support_model and the soft support's flags (paper §4.3): the support as a foam part — a
 // tet mesh of the support surface (CGAL Mesh_3, ergo/body/support_solid.h) or the user's own
-// (--support_tets: .msh, or a TetGen .node/.ele pair) — with the neo-Hookean material of
+// (--support_tets: .msh, or a TetGen .node/.ele pair; --support_held lists its held vertices)
+// — with the neo-Hookean material of
 // --support_youngs_modulus and --support_poisson_ratio, its bottom plane held, and its own
 // weight when --support_density > 0. A tool gets these flags by calling SoftSupportFromFlags.
 #pragma once
@@ -17,6 +18,10 @@ namespace ergo {
 
 // Whether --support_model is soft (InputError naming it for a word other than rigid / soft).
 bool SoftSupportRequested();
+
+// Checks every soft-support flag's range (InputError naming the flag) before any work;
+// nothing for --support_model=rigid.
+void CheckSoftSupportFlags();
 
 // --support_tets: the user's tet mesh of the soft support, or "" to mesh the surface.
 const std::string& SoftSupportTetFile();

@@ -115,6 +115,7 @@ void CheckUnits(const LayeredBody& body, const TriMesh& support) {
 int Run() {
   Require(FLAGS_body, "body");
   const bool soft = SoftSupportRequested();
+  CheckSoftSupportFlags();
   if (!soft || SoftSupportTetFile().empty()) Require(FLAGS_support, "support");
   Require(FLAGS_out, "out");
   RequireInRange("max_iterations", static_cast<long>(FLAGS_max_iterations), 1, 100000, "e.g. 100");
