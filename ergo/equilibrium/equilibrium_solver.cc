@@ -142,6 +142,9 @@ FactorizationStatus EquilibriumSolver::FactorizeNewtonMatrix(const BodyState& st
 }
 
 void EquilibriumSolver::AnalyzeIfChanged(const SparseMatrix& hessian) {
+  // A rigid support's pattern never changes (analysed in the constructor): no comparison of
+  // index arrays in its Newton loop.
+  if (!potential_.soft_support()) return;
   const Clock::time_point start = Clock::now();
   if (cholesky_.AnalyzeIfChanged(hessian)) {
     ++analyses_;

@@ -217,6 +217,19 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
   EXPECT_EQ(refused.status, 2) << refused.output;
   EXPECT_NE(refused.output.find("held_bad.txt:line 2"), std::string::npos) << refused.output;
 
+  // An open support surface is refused as a support, before any meshing.
+  {
+    TriMesh open = MakeBox({-150, -110, -150}, {150, -60, 150}, {2, 1, 2});
+    open.triangles.conservativeResize(open.triangles.rows() - 2, 3);
+    WriteTriMesh(*dir_ + "/open_mm.stl", open);
+  }
+  const CommandResult open_run = RunCommand(
+      "timeout 120 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ + "/ball --support=" + *dir_ +
+      "/open_mm.stl --unit=mm --support_model=soft --out=" + *dir_ + "/soft_open");
+  EXPECT_EQ(open_run.status, 2) << open_run.output;
+  EXPECT_NE(open_run.output.find("open_mm.stl"), std::string::npos) << open_run.output;
+  EXPECT_EQ(open_run.output.find("Mesh_3"), std::string::npos) << open_run.output;
+
   CommandResult bad = RunCommand(Simulate("--support_model=foam", "bad_soft1"));
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.output.find("--support_model"), std::string::npos) << bad.output;

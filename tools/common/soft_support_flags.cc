@@ -12,6 +12,7 @@
 
 #include "ergo/body/support_solid.h"
 #include "ergo/body/tissue_material.h"
+#include "ergo/contact/support.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/text_reader.h"
@@ -113,6 +114,9 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
     held = FLAGS_support_held.empty() ? BottomVertices(mesh, 1e-6 * size)
                                       : ReadHeldVertices(FLAGS_support_held, mesh.vertices.rows());
   } else {
+    // The support check first (closed, manifold, outward): Mesh_3 of an open surface gives no
+    // solid, and its message would blame the edge length.
+    Support(surface, source);
     SupportSolidOptions options;
     options.top_edge_length = FLAGS_soft_support_edge_length;
     options.base_edge_length = FLAGS_soft_support_base_edge_length;
