@@ -44,7 +44,8 @@ ObjectiveValue IllConditionedQuadratic::Evaluate(const Eigen::VectorXd& x, bool 
   ObjectiveValue out;
   const Eigen::VectorXd r = x - minimizer_;
   const Eigen::VectorXd g = hessian_ * r;
-  out.phi = out.zeta = 0.5 * r.dot(g);
+  out.phi = 0.5 * r.dot(g);
+  out.terms = {{"f", 1, out.phi}};
   out.ok = std::isfinite(out.phi);
   out.message = out.ok ? "ok" : "non-finite value";
   if (with_gradient && out.ok) out.gradient = g;
@@ -77,7 +78,8 @@ ObjectiveValue ExtendedRosenbrock::Evaluate(const Eigen::VectorXd& x, bool with_
       out.gradient[i + 1] = 200 * a;
     }
   }
-  out.phi = out.zeta = f;
+  out.phi = f;
+  out.terms = {{"f", 1, f}};
   out.ok = std::isfinite(f);
   out.message = out.ok ? "ok" : "non-finite value";
   if (!out.ok) out.gradient.resize(0);

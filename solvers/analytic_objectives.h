@@ -23,6 +23,7 @@ class AnalyticObjective : public Objective {
   double BoxHalfWidthForMove(double move) const override { return move / metres_per_unit_; }
   double LengthScale() const override { return 1e-3 / metres_per_unit_; }  // 1 mm
   double metres_per_unit() const { return metres_per_unit_; }
+  std::vector<std::string> TermNames() const override { return {"f"}; }
 
   // The minimiser; the minimum is 0.
   virtual Eigen::VectorXd Minimizer() const = 0;

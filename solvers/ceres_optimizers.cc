@@ -72,7 +72,7 @@ class HistoryCallback : public ceres::IterationCallback {
       LOG_IF(WARNING, !exact) << name_ << " iteration " << summary.iteration
                               << ": the iterate is not among the evaluated designs; the "
                                  "history shows the nearest evaluated one";
-      monitor_->AddIteration({summary.iteration, 0, 0, 0, logged.phi, logged.zeta, logged.psi,
+      monitor_->AddIteration({summary.iteration, 0, 0, 0, logged.phi, logged.terms,
                               logged.gradient_norm, objective_->LargestMove(x - previous_),
                               EvaluationTiming()});
       previous_ = x;
@@ -104,8 +104,8 @@ class CeresOptimizer : public Optimizer {
     ObjectiveValue value;
     if (!monitor.Evaluate(objective, x0, true, &value)) return monitor.Finish("no evaluation");
     if (!value.ok) return monitor.Finish("failed: x₀ could not be evaluated: " + value.message);
-    monitor.AddIteration({0, 0, 0, 0, value.phi, value.zeta, value.psi, value.gradient.norm(), 0,
-                          EvaluationTiming()});
+    monitor.AddIteration(
+        {0, 0, 0, 0, value.phi, value.terms, value.gradient.norm(), 0, EvaluationTiming()});
 
     DesignScaling scaling;
     scaling.value_scale = std::abs(value.phi) > 0 ? std::abs(value.phi) : 1.0;

@@ -5,6 +5,12 @@
 
 namespace ergo {
 
+std::vector<std::string> DesignTermNames() { return {"zeta", "psi"}; }
+
+ObjectiveTerms DesignTerms(const DesignEvaluation& evaluation, double gamma) {
+  return {{"zeta", 1, evaluation.zeta}, {"psi", gamma, evaluation.psi}};
+}
+
 DesignObjective::DesignObjective(const DesignProblem& problem)
     : problem_(std::make_unique<DesignProblem>(problem)) {}
 
@@ -18,8 +24,7 @@ ObjectiveValue DesignObjective::Evaluate(const Eigen::VectorXd& x, bool with_gra
   out.timing = last_.timing;
   if (!last_.ok) return out;
   out.phi = last_.phi;
-  out.zeta = last_.zeta;
-  out.psi = last_.psi;
+  out.terms = DesignTerms(last_, problem_->options().gamma);
   if (with_gradient) out.gradient = last_.gradient;
   return out;
 }

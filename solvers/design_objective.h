@@ -13,12 +13,17 @@
 
 namespace ergo {
 
+// A design evaluation's φ = ζ + γψ as named terms: "zeta" (weight 1) and "psi" (weight γ).
+std::vector<std::string> DesignTermNames();
+ObjectiveTerms DesignTerms(const DesignEvaluation& evaluation, double gamma);
+
 class DesignObjective : public Objective {
  public:
   // Copies `problem` (which keeps a reference to its body: the body must outlive this).
   explicit DesignObjective(const DesignProblem& problem);
 
   int NumParameters() const override { return problem_->NumParameters(); }
+  std::vector<std::string> TermNames() const override { return DesignTermNames(); }
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override;
   std::unique_ptr<Objective> Clone() const override;
   // max over active vertices of SupportParameterization::VertexMoves(dx).

@@ -33,6 +33,7 @@ ObjectiveValue FreshScoreObjective::Evaluate(const Eigen::VectorXd& x, bool with
                        : "the body placed afresh did not reach equilibrium at every one of " +
                              std::to_string(placements_.size()) + " placements";
   if (!out.ok) out.phi = 0;
+  if (out.ok) out.terms = {{"fresh_phi", 1, out.phi}};
   return out;
 }
 

@@ -24,6 +24,8 @@ class FreshScoreObjective : public Objective {
                       const std::atomic<bool>* stop = nullptr);
 
   int NumParameters() const override { return design_.NumParameters(); }
+  // One term: φ placed afresh, averaged over the placements (its ζ and ψ are not kept).
+  std::vector<std::string> TermNames() const override { return {"fresh_phi"}; }
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override;
   std::unique_ptr<Objective> Clone() const override;
   double LargestMove(const Eigen::VectorXd& dx) const override { return design_.LargestMove(dx); }

@@ -20,8 +20,11 @@ std::string CsvField(const std::string& text) {
 
 void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
   WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "iteration,evaluations,newton_iterations,wall_s,phi,zeta,psi,grad_norm,step,kept_fresh_"
-           "phi";
+    // One column per term of φ (a design problem's zeta and psi), by name.
+    const std::vector<std::string> names = result.TermNames();
+    out << "iteration,evaluations,newton_iterations,wall_s,phi";
+    for (const std::string& name : names) out << ',' << CsvField(name);
+    out << ",grad_norm,step,kept_fresh_phi";
     // The time split's columns; its newton_iterations is the column above already.
     ForEachTimingEntry(
         EvaluationTiming(), [&](const char* name, double) { out << ',' << name; },
@@ -32,9 +35,12 @@ void WriteHistoryCsv(const std::string& path, const OptimizerResult& result) {
     for (const IterationRecord& r : result.history) {
       out << r.iteration << ',' << r.evaluations << ',' << r.newton_iterations << ',';
       WriteDouble(out, r.seconds);
-      for (double v : {r.phi, r.zeta, r.psi}) {
+      out << ',';
+      WriteDouble(out, r.phi);
+      for (const std::string& name : names) {
         out << ',';
-        WriteDouble(out, v);
+        const double value = TermValue(r.terms, name);
+        if (!std::isnan(value)) WriteDouble(out, value);
       }
       out << ',';
       if (r.gradient_norm >= 0) WriteDouble(out, r.gradient_norm);

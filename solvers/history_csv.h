@@ -1,5 +1,6 @@
 // CSV output of optimiser runs (written atomically, ergo/mesh/atomic_file.h): one history
-// per run — iteration, evaluations, newton_iterations, wall_s, phi, zeta, psi, grad_norm
+// per run — iteration, evaluations, newton_iterations, wall_s, phi, one column per
+// term of φ by name (a design problem's zeta, psi; an analytic function's f), grad_norm
 // (empty where ∇φ was not evaluated), step (largest vertex move from the previous iterate,
 // m), kept_fresh_phi (runs in fresh rounds: the score afresh of the design kept at that row;
 // empty for other runs), then the time split of the evaluations (ergo/design/evaluation_timing.h) —

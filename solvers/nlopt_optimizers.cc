@@ -92,7 +92,7 @@ struct Run {
     if (value.phi < best_phi) {
       best_phi = value.phi;
       best_u = Eigen::Map<const Eigen::VectorXd>(u, n);
-      monitor->AddIteration({++iteration, 0, 0, 0, value.phi, value.zeta, value.psi,
+      monitor->AddIteration({++iteration, 0, 0, 0, value.phi, value.terms,
                              gradient ? value.gradient.norm() : -1.0,
                              objective->LargestMove(x - previous_x), EvaluationTiming()});
       previous_x = x;
@@ -152,8 +152,8 @@ class NloptOptimizer : public Optimizer {
     ObjectiveValue value;
     if (!monitor.Evaluate(objective, x0, true, &value)) return monitor.Finish("no evaluation");
     if (!value.ok) return monitor.Finish("failed: x₀ could not be evaluated: " + value.message);
-    monitor.AddIteration({0, 0, 0, 0, value.phi, value.zeta, value.psi, value.gradient.norm(), 0,
-                          EvaluationTiming()});
+    monitor.AddIteration(
+        {0, 0, 0, 0, value.phi, value.terms, value.gradient.norm(), 0, EvaluationTiming()});
 
     const Eigen::Index n = x0.size();
     const double length = objective.LengthScale();

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -15,14 +16,31 @@
 
 namespace ergo {
 
+// A named part of φ: φ = Σ weight · value over an objective's terms (a design problem's
+// "zeta" and "psi" with weights 1 and γ; an analytic function's single "f"). The optimisers
+// minimise φ; the terms are what they log and report, whatever the objective is made of.
+struct ObjectiveTerm {
+  std::string name;
+  double weight = 1;
+  double value = 0;
+};
+using ObjectiveTerms = std::vector<ObjectiveTerm>;
+
+// The value of the term called `name`, NaN if there is none.
+double TermValue(const ObjectiveTerms& terms, const std::string& name);
+// Adds scale · value of every term of `from` to the term of the same name in *into (appended,
+// with from's weight, when *into has none): averages of objectives made of the same terms.
+void AddScaledTerms(const ObjectiveTerms& from, double scale, ObjectiveTerms* into);
+
 // One evaluation. A failed one (ok = false) carries a message and never a number.
 struct ObjectiveValue {
   bool ok = false;
-  std::string message;                // why not ok, or "ok"
-  double phi = 0, zeta = 0, psi = 0;  // φ = ζ + γψ (analytic objectives: ζ = φ, ψ = 0)
-  Eigen::VectorXd gradient;           // ∇φ, when requested and ok
-  int newton_iterations = 0;          // equilibrium Newton iterations spent (also when failed)
-  double seconds = 0;                 // wall time of this evaluation
+  std::string message;        // why not ok, or "ok"
+  double phi = 0;             // the value minimised
+  ObjectiveTerms terms;       // φ's named parts, in the objective's TermNames() order
+  Eigen::VectorXd gradient;   // ∇φ, when requested and ok
+  int newton_iterations = 0;  // equilibrium Newton iterations spent (also when failed)
+  double seconds = 0;         // wall time of this evaluation
   // Where the time went, summed over the equilibria the evaluation solved (also when it
   // failed); all zeros for objectives that are not design problems (analytic ones).
   EvaluationTiming timing;
@@ -33,6 +51,8 @@ class Objective {
   virtual ~Objective() = default;
 
   virtual int NumParameters() const = 0;
+  // The names of φ's terms, as every successful evaluation fills ObjectiveValue::terms.
+  virtual std::vector<std::string> TermNames() const = 0;
   // φ(x) and, if with_gradient, ∇φ(x). Not thread-safe on one object: Clone per thread.
   virtual ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) = 0;
   // An independent copy that may be evaluated on another thread, carrying this object's

@@ -35,17 +35,30 @@ std::string OptimizerResult::BriefReport() const {
   return out.str();
 }
 
+std::vector<std::string> OptimizerResult::TermNames() const {
+  std::vector<std::string> names;
+  for (const ObjectiveTerm& term : best_terms) names.push_back(term.name);
+  for (const IterationRecord& r : history)
+    for (const ObjectiveTerm& term : r.terms)
+      if (std::find(names.begin(), names.end(), term.name) == names.end())
+        names.push_back(term.name);
+  return names;
+}
+
 std::string OptimizerResult::FullReport() const {
   std::ostringstream out;
   out << BriefReport() << "\n";
-  out << "  iter  evals  newton     wall_s          phi         zeta          psi    |grad|"
-         "      step_m\n";
+  const std::vector<std::string> names = TermNames();
+  out << "  iter  evals  newton     wall_s          phi";
+  for (const std::string& name : names) out << std::setw(13) << name;
+  out << "    |grad|      step_m\n";
   for (const IterationRecord& r : history) {
     out << std::setw(6) << r.iteration << std::setw(7) << r.evaluations << std::setw(8)
         << r.newton_iterations << std::setw(11) << std::setprecision(4) << r.seconds
-        << std::setw(13) << std::setprecision(6) << r.phi << std::setw(13) << r.zeta
-        << std::setw(13) << r.psi << std::setw(10) << std::setprecision(3) << r.gradient_norm
-        << std::setw(12) << r.step << "\n";
+        << std::setw(13) << std::setprecision(6) << r.phi;
+    for (const std::string& name : names) out << std::setw(13) << TermValue(r.terms, name);
+    out << std::setw(10) << std::setprecision(3) << r.gradient_norm << std::setw(12) << r.step
+        << "\n";
   }
   return out.str();
 }

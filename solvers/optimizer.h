@@ -42,13 +42,14 @@ struct Budget {
 
 // Per-iteration history entry: φ and its parts at the iterate, and the cost so far.
 struct IterationRecord {
-  int iteration = 0;                  // 0 = the start x₀
-  long evaluations = 0;               // φ evaluations so far (all of them)
-  long newton_iterations = 0;         // equilibrium Newton iterations so far
-  double seconds = 0;                 // wall clock since Minimize began
-  double phi = 0, zeta = 0, psi = 0;  // as evaluated at the iterate (never interpolated)
-  double gradient_norm = -1;  // ‖∇φ‖₂ at the iterate; −1 where it was not evaluated
-  double step = 0;            // largest vertex move from the previous iterate, m
+  int iteration = 0;           // 0 = the start x₀
+  long evaluations = 0;        // φ evaluations so far (all of them)
+  long newton_iterations = 0;  // equilibrium Newton iterations so far
+  double seconds = 0;          // wall clock since Minimize began
+  double phi = 0;              // as evaluated at the iterate (never interpolated)
+  ObjectiveTerms terms;        // φ's named parts there
+  double gradient_norm = -1;   // ‖∇φ‖₂ at the iterate; −1 where it was not evaluated
+  double step = 0;             // largest vertex move from the previous iterate, m
   // The time split of every evaluation so far (cumulative like `evaluations`; zeros for
   // objectives that are not design problems).
   EvaluationTiming timing;
@@ -79,7 +80,7 @@ struct OptimizerResult {
   // When best_phi is the score of best_x placed afresh (MinimizeInRounds): the optimiser's own
   // value there, on its path. NaN otherwise.
   double followed_phi = std::numeric_limits<double>::quiet_NaN();
-  double best_zeta = 0, best_psi = 0;
+  ObjectiveTerms best_terms;  // φ(best_x)'s named parts
   // A copy of the objective as it stood right after evaluating best_x. For a DesignProblem
   // it holds the equilibrium the optimiser saw there: re-evaluating best_x on it reproduces
   // best_phi (a fresh problem may settle into another equilibrium where several exist).
@@ -99,6 +100,8 @@ struct OptimizerResult {
   EvaluationTiming timing;
 
   double ReductionPercent() const;  // 100 (1 − best/initial)
+  // The names of φ's terms in this run's records (best_terms' order first).
+  std::vector<std::string> TermNames() const;
   std::string BriefReport() const;  // one line
   std::string FullReport() const;   // one line per history entry below the brief report
 };

@@ -104,7 +104,10 @@ PopulationObjective::PopulationObjective(std::vector<PopulationMember> members,
   const Objective& first = local();
   for (const PopulationMember& m : members_) {
     CHECK(m.objective || exchange_) << m.name << ": evaluated nowhere";
-    if (m.objective) CHECK_EQ(m.objective->NumParameters(), first.NumParameters()) << m.name;
+    if (m.objective) {
+      CHECK_EQ(m.objective->NumParameters(), first.NumParameters()) << m.name;
+      CHECK(m.objective->TermNames() == first.TermNames()) << m.name << ": other objective terms";
+    }
     CHECK(m.weight > 0 && m.scale > 0) << m.name;
     total += m.weight;
   }
@@ -132,9 +135,10 @@ const Objective& PopulationObjective::local() const {
 
 namespace {
 
-// Per body in the exchanged buffer: status (1 ok, 2 failed), φ, ζ, ψ, Newton iterations,
-// seconds, the timing entries, then the gradient.
-constexpr int kHeader = 6;
+// Per body in the exchanged buffer: status (1 ok, 2 failed), φ, Newton iterations,
+// seconds, each term's weight and value (in TermNames() order), the timing entries, then the
+// gradient.
+constexpr int kHeader = 4;
 constexpr size_t kMessageBytes = 480;
 
 // The time split's entry names, in ForEachTimingEntry's order (the slots after the header).
@@ -156,21 +160,27 @@ void PopulationObjective::Exchange(bool with_gradient, int num_parameters,
   const int count = size();
   const std::vector<std::string>& names = TimingNames();
   const int timing_entries = static_cast<int>(names.size());
-  const size_t stride = kHeader + timing_entries + (with_gradient ? num_parameters : 0);
+  const std::vector<std::string> term_names = TermNames();
+  const int term_slots = 2 * static_cast<int>(term_names.size());
+  const int timing_start = kHeader + term_slots, gradient_start = timing_start + timing_entries;
+  const size_t stride = gradient_start + (with_gradient ? num_parameters : 0);
   std::vector<double> buffer(stride * count, 0.0);
   for (int b = 0; b < count; ++b) {
     if (!members_[b].objective) continue;
     const ObjectiveValue& v = (*values)[b];
     double* slot = buffer.data() + stride * b;
     slot[0] = v.ok ? 1 : 2;
-    slot[1] = v.phi, slot[2] = v.zeta, slot[3] = v.psi;
-    slot[4] = v.newton_iterations, slot[5] = v.seconds;
-    int k = kHeader;
+    slot[1] = v.phi, slot[2] = v.newton_iterations, slot[3] = v.seconds;
+    for (size_t t = 0; t < term_names.size(); ++t) {
+      slot[kHeader + 2 * t] = v.ok ? v.terms.at(t).weight : 0.0;
+      slot[kHeader + 2 * t + 1] = v.ok ? v.terms.at(t).value : 0.0;
+    }
+    int k = timing_start;
     ForEachTimingEntry(
         v.timing, [&](const char*, double x) { slot[k++] = x; },
         [&](const char*, long x) { slot[k++] = static_cast<double>(x); });
     if (with_gradient && v.ok)
-      Eigen::Map<Eigen::VectorXd>(slot + kHeader + timing_entries, num_parameters) = v.gradient;
+      Eigen::Map<Eigen::VectorXd>(slot + gradient_start, num_parameters) = v.gradient;
   }
   exchange_->SumDisjoint(&buffer);
   bool any_failed = false;
@@ -184,12 +194,15 @@ void PopulationObjective::Exchange(bool with_gradient, int num_parameters,
     CHECK(slot[0] == 1 || slot[0] == 2) << "body " << members_[b].name << " evaluated nowhere";
     v.ok = slot[0] == 1;
     any_failed = any_failed || !v.ok;
-    v.phi = slot[1], v.zeta = slot[2], v.psi = slot[3];
-    v.newton_iterations = static_cast<int>(slot[4]), v.seconds = slot[5];
-    for (int k = 0; k < timing_entries; ++k) SetTimingEntry(names[k], slot[kHeader + k], &v.timing);
+    v.phi = slot[1], v.newton_iterations = static_cast<int>(slot[2]), v.seconds = slot[3];
+    v.terms.clear();
+    if (v.ok)
+      for (size_t t = 0; t < term_names.size(); ++t)
+        v.terms.push_back({term_names[t], slot[kHeader + 2 * t], slot[kHeader + 2 * t + 1]});
+    for (int k = 0; k < timing_entries; ++k)
+      SetTimingEntry(names[k], slot[timing_start + k], &v.timing);
     if (with_gradient && v.ok)
-      v.gradient =
-          Eigen::Map<const Eigen::VectorXd>(slot + kHeader + timing_entries, num_parameters);
+      v.gradient = Eigen::Map<const Eigen::VectorXd>(slot + gradient_start, num_parameters);
     v.message = v.ok ? "ok" : "";
   }
   if (!any_failed) return;  // every process knows this from the same sums
@@ -237,10 +250,8 @@ ObjectiveValue PopulationObjective::Evaluate(const Eigen::VectorXd& x, bool with
   for (int b = 0; b < count; ++b) r[b] = values[b].phi / members_[b].scale;
   std::vector<double> dF_dr;
   out.phi = PopulationScore(r, weights_, options_, &dF_dr);
-  for (int b = 0; b < count; ++b) {
-    out.zeta += weights_[b] * values[b].zeta / members_[b].scale;
-    out.psi += weights_[b] * values[b].psi / members_[b].scale;
-  }
+  for (int b = 0; b < count; ++b)
+    AddScaledTerms(values[b].terms, weights_[b] / members_[b].scale, &out.terms);
   if (with_gradient) {
     out.gradient = Eigen::VectorXd::Zero(x.size());
     for (int b = 0; b < count; ++b)

@@ -66,7 +66,9 @@ class PopulationObjective : public Objective {
   PopulationObjective(const PopulationObjective& other);
 
   int NumParameters() const override { return local().NumParameters(); }
-  // F and ∇F; φ = F, ζ and ψ the weighted means of the members' r-scaled parts. Fails
+  // The members' term names (every member has the same).
+  std::vector<std::string> TermNames() const override { return local().TermNames(); }
+  // F and ∇F; φ = F, its terms the weighted means of the members' r-scaled terms. Fails
   // (naming the body) if any member fails. The members' normalised scores r_b of this
   // evaluation are in last_scores().
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override;

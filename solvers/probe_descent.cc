@@ -34,8 +34,8 @@ class ProbeDescent : public Optimizer {
     ObjectiveValue value;
     if (!monitor.Evaluate(objective, x0, true, &value)) return monitor.Finish("no evaluation");
     if (!value.ok) return monitor.Finish("failed: x₀ could not be evaluated: " + value.message);
-    monitor.AddIteration({0, 0, 0, 0, value.phi, value.zeta, value.psi, value.gradient.norm(), 0,
-                          EvaluationTiming()});
+    monitor.AddIteration(
+        {0, 0, 0, 0, value.phi, value.terms, value.gradient.norm(), 0, EvaluationTiming()});
 
     const double value_scale = std::abs(value.phi) > 0 ? std::abs(value.phi) : 1.0;
     const double length_scale = objective.LengthScale();
@@ -105,8 +105,8 @@ class ProbeDescent : public Optimizer {
       owned = std::move(outcome.objective);
       current = owned.get();
       restart = false;
-      monitor.AddIteration({++iteration, 0, 0, 0, phi, outcome.value.zeta, outcome.value.psi,
-                            g.norm(), step, EvaluationTiming()});
+      monitor.AddIteration(
+          {++iteration, 0, 0, 0, phi, outcome.value.terms, g.norm(), step, EvaluationTiming()});
       if (decrease < budget.function_tolerance) {
         reason = "function tolerance: φ fell by " + Format(100 * decrease) + " %";
         break;

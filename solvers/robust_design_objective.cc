@@ -53,10 +53,10 @@ ObjectiveValue RobustDesignObjective::Evaluate(const Eigen::VectorXd& x, bool wi
   out.ok = true;
   out.message = "ok";
   if (with_gradient) out.gradient = Eigen::VectorXd::Zero(x.size());
-  for (const DesignEvaluation& r : results) {
+  for (int p = 0; p < count; ++p) {
+    const DesignEvaluation& r = results[p];
     out.phi += r.phi / count;
-    out.zeta += r.zeta / count;
-    out.psi += r.psi / count;
+    AddScaledTerms(DesignTerms(r, problems_[p]->options().gamma), 1.0 / count, &out.terms);
     if (with_gradient) out.gradient += r.gradient / count;
   }
   return out;

@@ -13,6 +13,7 @@
 
 #include "ergo/design/design_problem.h"
 #include "ergo/design/placement_checks.h"
+#include "solvers/design_objective.h"
 #include "solvers/objective.h"
 
 namespace ergo {
@@ -25,7 +26,8 @@ class RobustDesignObjective : public Objective {
   RobustDesignObjective(const RobustDesignObjective& other);
 
   int NumParameters() const override { return problems_.front()->NumParameters(); }
-  // Mean φ, ζ, ψ and ∇φ over the placements; fails (naming the placement) if any fails.
+  std::vector<std::string> TermNames() const override { return DesignTermNames(); }
+  // Mean φ, its terms and ∇φ over the placements; fails (naming the placement) if any fails.
   // `seconds` is the wall time (the slowest placement), `timing` the sum of the placements'
   // splits (so its seconds exceed the wall time when they ran in parallel).
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override;

@@ -93,7 +93,7 @@ bool RunMonitor::Evaluate(Objective& objective, const Eigen::VectorXd& x, bool w
   timing_ += v.timing;
   if (!v.ok) ++failed_;
   if (v.ok) {
-    Logged entry{x, v.phi, v.zeta, v.psi,
+    Logged entry{x, v.phi, v.terms,
                  with_gradient && v.gradient.size() == x.size() ? v.gradient.norm() : -1.0};
     if (!has_best_ || v.phi < best_.phi) {
       best_ = entry;
@@ -200,8 +200,7 @@ OptimizerResult RunMonitor::Finish(const std::string& optimizer_reason) const {
   if (has_best_) {
     result.best_x = best_.x;
     result.best_phi = best_.phi;
-    result.best_zeta = best_.zeta;
-    result.best_psi = best_.psi;
+    result.best_terms = best_.terms;
     result.best_objective = best_objective_;
     for (const Logged& c : candidates_) {
       result.candidates.push_back(c.x);

@@ -48,7 +48,8 @@ class RunMonitor {
   // A successfully evaluated design's values, looked up by the exact design vector.
   struct Logged {
     Eigen::VectorXd x;
-    double phi = 0, zeta = 0, psi = 0;
+    double phi = 0;
+    ObjectiveTerms terms;
     double gradient_norm = -1;  // −1: evaluated without gradient
   };
   // The logged evaluation at exactly x, else the logged one nearest to x (∞-norm);

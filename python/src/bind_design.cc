@@ -92,6 +92,20 @@ py::dict EvaluationDict(const DesignEvaluation& e, bool with_gradient) {
   return d;
 }
 
+// φ's named terms: "terms" {name: {"weight", "value"}}, and each term's value under its own
+// name (a design problem's "zeta" and "psi").
+void AddTerms(const ObjectiveTerms& terms, py::dict* d) {
+  py::dict named;
+  for (const ObjectiveTerm& term : terms) {
+    py::dict entry;
+    entry["weight"] = term.weight;
+    entry["value"] = term.value;
+    named[py::str(term.name)] = entry;
+    (*d)[py::str(term.name)] = term.value;
+  }
+  (*d)["terms"] = named;
+}
+
 py::dict RecordDict(const IterationRecord& r) {
   py::dict d;
   d["iteration"] = r.iteration;
@@ -99,8 +113,7 @@ py::dict RecordDict(const IterationRecord& r) {
   d["newton_iterations"] = r.newton_iterations;
   d["seconds"] = r.seconds;
   d["phi"] = r.phi;
-  d["zeta"] = r.zeta;
-  d["psi"] = r.psi;
+  AddTerms(r.terms, &d);
   d["gradient_norm"] = r.gradient_norm;
   d["step"] = r.step;
   d["kept_fresh_phi"] = r.kept_fresh_phi;  // NaN outside runs in fresh rounds
@@ -116,8 +129,7 @@ py::dict ResultDict(const OptimizerResult& r) {
   d["phi"] = r.best_phi;
   d["initial_phi"] = r.initial_phi;
   d["reduction_percent"] = r.ReductionPercent();
-  d["zeta"] = r.best_zeta;
-  d["psi"] = r.best_psi;
+  AddTerms(r.best_terms, &d);
   d["evaluations"] = r.evaluations;
   d["failed_evaluations"] = r.failed_evaluations;
   d["newton_iterations"] = r.newton_iterations;

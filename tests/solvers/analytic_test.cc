@@ -127,6 +127,7 @@ class WalledQuadratic : public Objective {
   WalledQuadratic(const IllConditionedQuadratic& quadratic, double wall)
       : quadratic_(quadratic), side_(quadratic.Minimizer()[0] > 0 ? 1.0 : -1.0), wall_(wall) {}
   int NumParameters() const override { return quadratic_.NumParameters(); }
+  std::vector<std::string> TermNames() const override { return quadratic_.TermNames(); }
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override {
     if (Allowed(x)) return quadratic_.Evaluate(x, with_gradient);
     ++*failures_;

@@ -34,12 +34,13 @@ class DriftingObjective : public Objective {
   DriftingObjective(std::shared_ptr<IllConditionedQuadratic> f, double drift)
       : f_(std::move(f)), drift_(drift) {}
   int NumParameters() const override { return f_->NumParameters(); }
+  std::vector<std::string> TermNames() const override { return f_->TermNames(); }
   ObjectiveValue Evaluate(const Eigen::VectorXd& x, bool with_gradient) override {
     if (origin_.size() == 0) origin_ = x;
     ObjectiveValue v = f_->Evaluate(x, with_gradient);
     const double travelled = (x - origin_).norm();
     v.phi -= drift_ * travelled;
-    v.zeta = v.phi;
+    v.terms = {{"f", 1, v.phi}};
     if (with_gradient && travelled > 0) v.gradient -= drift_ * (x - origin_) / travelled;
     v.timing = OneEquilibrium();
     return v;

@@ -289,7 +289,15 @@ TEST(SolversPopulation, BodiesSplitOverTwoProcessesGiveTheSameBitsAsOne) {
       ASSERT_TRUE(v->ok) << v->message;
       EXPECT_EQ(v->phi, expected.phi);  // bit for bit: every slot is summed with zeros only
       EXPECT_EQ(v->gradient, expected.gradient);
+      // The members' named terms cross the exchange too (names, weights and values).
+      ASSERT_EQ(v->terms.size(), expected.terms.size());
+      for (size_t t = 0; t < expected.terms.size(); ++t) {
+        EXPECT_EQ(v->terms[t].name, expected.terms[t].name);
+        EXPECT_EQ(v->terms[t].weight, expected.terms[t].weight);
+        EXPECT_EQ(v->terms[t].value, expected.terms[t].value);
+      }
     }
+    ASSERT_FALSE(expected.terms.empty());
     EXPECT_EQ(even.last_scores(), whole.last_scores());
   }
 }

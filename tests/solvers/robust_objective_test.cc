@@ -33,7 +33,7 @@ TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDiffere
   ASSERT_TRUE(at.ok) << at.message;
 
   // The mean of the three placed problems, each evaluated on its own.
-  double mean = 0;
+  double mean = 0, mean_zeta = 0, mean_psi = 0;
   long newton = 0;
   Eigen::VectorXd gradient = Eigen::VectorXd::Zero(x0.size());
   for (const Placement& placement : placements) {
@@ -41,10 +41,20 @@ TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDiffere
     const DesignEvaluation e = placed.Evaluate(x0, true);
     ASSERT_TRUE(e.ok) << placement.name << ": " << e.message;
     mean += e.phi / 3;
+    mean_zeta += e.zeta / 3;
+    mean_psi += e.psi / 3;
     gradient += e.gradient / 3;
     newton += e.equilibrium.iterations;
   }
   EXPECT_NEAR(at.phi, mean, 1e-12 * mean);
+  // Its named terms are the placements' means, weighted as in φ = ζ + γψ.
+  ASSERT_EQ(robust.TermNames(), (std::vector<std::string>{"zeta", "psi"}));
+  ASSERT_EQ(at.terms.size(), 2u);
+  EXPECT_NEAR(TermValue(at.terms, "zeta"), mean_zeta, 1e-12 * mean_zeta);
+  EXPECT_NEAR(TermValue(at.terms, "psi"), mean_psi, 1e-12 * std::abs(mean_psi) + 1e-300);
+  EXPECT_EQ(at.terms[1].weight, problem.options().gamma);
+  EXPECT_NEAR(at.terms[0].weight * at.terms[0].value + at.terms[1].weight * at.terms[1].value,
+              at.phi, 1e-12 * at.phi);
   EXPECT_LT((at.gradient - gradient).norm(), 1e-9 * gradient.norm());
   // Its time split is the sum of the placements' (wall time: the slowest of them).
   EXPECT_EQ(at.timing.equilibria, 3);

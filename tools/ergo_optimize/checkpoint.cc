@@ -140,14 +140,18 @@ void WriteCheckpoint(const std::string& path, const RoundsState& state,
   j["kept_candidate"] = state.kept_candidate;
   j["finished"] = state.finished;
   j["stop_reason"] = state.stop_reason;
-  Json history = Json::array(), history_timing = Json::array();
+  Json history = Json::array(), history_terms = Json::array(), history_timing = Json::array();
   for (const IterationRecord& r : state.history) {
-    history.push_back(
-        Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds, r.phi, r.zeta,
-                     r.psi, r.gradient_norm, r.step, r.kept_fresh_phi}));
+    history.push_back(Json::array({r.iteration, r.evaluations, r.newton_iterations, r.seconds,
+                                   r.phi, r.gradient_norm, r.step, r.kept_fresh_phi}));
+    Json terms = Json::array();
+    for (const ObjectiveTerm& term : r.terms)
+      terms.push_back(Json::array({term.name, term.weight, term.value}));
+    history_terms.push_back(terms);
     history_timing.push_back(TimingJson(r.timing));
   }
   j["history"] = history;
+  j["history_terms"] = history_terms;
   j["history_time_split"] = history_timing;
   WriteJsonFile(path, j, 0);
 }
@@ -242,8 +246,9 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
     throw InputError(path, "member \"history\"", "is not an array", "start the run afresh");
   for (const Json& entry : history) {
     const std::vector<double> h = ToVector(entry, source, "history");
-    // Nine entries: a checkpoint written before kept_fresh_phi was recorded.
-    if (h.size() != 9 && h.size() != 10)
+    // Eight entries, the terms in "history_terms"; nine or ten: a checkpoint written before
+    // the terms were named (ζ and ψ inline) or before kept_fresh_phi was recorded.
+    if (h.size() < 8 || h.size() > 10)
       throw InputError(path, "", "has a malformed history entry", "start afresh");
     IterationRecord r;
     r.iteration = static_cast<int>(h[0]);
@@ -251,12 +256,34 @@ RoundsState ReadCheckpoint(const std::string& path, const std::string& fingerpri
     r.newton_iterations = static_cast<long>(h[2]);
     r.seconds = h[3];
     r.phi = h[4];
-    r.zeta = h[5];
-    r.psi = h[6];
-    r.gradient_norm = h[7];
-    r.step = h[8];
-    if (h.size() == 10) r.kept_fresh_phi = h[9];
+    if (h.size() == 8) {
+      r.gradient_norm = h[5];
+      r.step = h[6];
+      r.kept_fresh_phi = h[7];
+    } else {
+      // φ = ζ + γψ gives the weight γ the old layout did not store.
+      const double zeta = h[5], psi = h[6];
+      r.terms = {{"zeta", 1, zeta}, {"psi", psi > 0 ? (r.phi - zeta) / psi : 0.0, psi}};
+      r.gradient_norm = h[7];
+      r.step = h[8];
+      if (h.size() == 10) r.kept_fresh_phi = h[9];
+    }
     state.history.push_back(r);
+  }
+  if (const Json* terms = FindMember(j, "history_terms")) {
+    if (!terms->is_array() || terms->size() != state.history.size())
+      throw InputError(path, "member \"history_terms\"", "does not match the history",
+                       "start the run afresh");
+    for (size_t i = 0; i < state.history.size(); ++i) {
+      for (const Json& term : (*terms)[i]) {
+        if (!term.is_array() || term.size() != 3 || !term[0].is_string() || !term[1].is_number() ||
+            !term[2].is_number())
+          throw InputError(path, "member \"history_terms\"", "has a malformed term",
+                           "start the run afresh");
+        state.history[i].terms.push_back(
+            {term[0].get<std::string>(), term[1].get<double>(), term[2].get<double>()});
+      }
+    }
   }
   const Json* history_timing = FindMember(j, "history_time_split");
   if (history_timing && history_timing->is_array() &&
