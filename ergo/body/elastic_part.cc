@@ -10,8 +10,50 @@
 #include "ergo/material/rest_shape_derivative.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/sparse_index.h"
+#include "ergo/mesh/tet_components.h"
 
 namespace ergo {
+namespace {
+
+// Every connected component of `mesh` must be held by three non-collinear vertices, else its
+// stiffness is singular (a free body, or a hinge about the held line).
+void RequireEachComponentHeld(const TetMesh& mesh, const std::vector<bool>& held,
+                              const std::string& name) {
+  const TetComponents components = LabelTetComponents(mesh);
+  const double size =
+      (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+  for (int c = 0; c < components.count; ++c) {
+    std::vector<Eigen::Vector3d> points;
+    Eigen::Index first = -1, count = 0;
+    for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v) {
+      if (components.vertex_component[v] != c) continue;
+      if (first < 0) first = v;
+      ++count;
+      if (held[v]) points.push_back(mesh.vertices.row(v).transpose());
+    }
+    // The held points' spread off the line through the first and the farthest from it.
+    double off_line = 0;
+    if (points.size() >= 3) {
+      size_t far = 0;
+      for (size_t i = 1; i < points.size(); ++i)
+        if ((points[i] - points[0]).norm() > (points[far] - points[0]).norm()) far = i;
+      const Eigen::Vector3d axis = (points[far] - points[0]).normalized();
+      for (const Eigen::Vector3d& p : points)
+        off_line = std::max(off_line, (p - points[0] - (p - points[0]).dot(axis) * axis).norm());
+    }
+    if (!(off_line > 1e-9 * size)) {
+      throw InputError(name,
+                       "connected component " + std::to_string(c) + " (" + std::to_string(count) +
+                           " vertices from vertex " + std::to_string(first) + ")",
+                       points.empty() ? "has no held vertex: it would float away"
+                                      : "is held only along a line or at a point: it would "
+                                        "turn about it",
+                       "hold its base (the bottom face, or a vertex set spanning an area)");
+    }
+  }
+}
+
+}  // namespace
 
 ElasticPart ElasticPart::Create(TetMesh rest, std::vector<bool> held, TissueMaterial material,
                                 const ElasticPartOptions& options, const std::string& name) {
@@ -27,6 +69,7 @@ ElasticPart ElasticPart::Create(TetMesh rest, std::vector<bool> held, TissueMate
     throw InputError(name, "", "no vertex is held: the part would float away",
                      "hold its base (the bottom face, or a vertex set)");
   }
+  RequireEachComponentHeld(rest, held, name);
   if (!(options.density >= 0) || !options.gravity.allFinite()) {
     throw InputError(name, "", "density must be >= 0 and gravity finite",
                      "use a foam's density (30–80 kg/m³) or 0");
@@ -53,6 +96,45 @@ ElasticPart ElasticPart::Create(TetMesh rest, std::vector<bool> held, TissueMate
   part.kernel_ = std::make_shared<const TetKernel>(part.rest_, part.material_);
   part.BuildPattern();
   return part;
+}
+
+ElasticPart ElasticPart::Join(const std::vector<const ElasticPart*>& parts,
+                              const std::string& name) {
+  CHECK(!parts.empty());
+  const ElasticPart& first = *parts.front();
+  Eigen::Index vertices = 0, tets = 0;
+  for (const ElasticPart* part : parts) {
+    vertices += part->rest_.vertices.rows();
+    tets += part->rest_.tets.rows();
+  }
+  TetMesh mesh;
+  mesh.vertices.resize(vertices, 3);
+  mesh.tets.resize(tets, 4);
+  std::vector<bool> held;
+  TissueMaterial material = first.material_;
+  material.youngs_modulus.resize(tets);
+  material.poisson_ratio.resize(tets);
+  Eigen::Index v0 = 0, t0 = 0;
+  for (size_t p = 0; p < parts.size(); ++p) {
+    const ElasticPart& part = *parts[p];
+    if (part.options_.density != first.options_.density ||
+        part.options_.gravity != first.options_.gravity ||
+        part.material_.compression_resistance != first.material_.compression_resistance ||
+        part.material_.inversion_threshold != first.material_.inversion_threshold) {
+      throw InputError(name, "soft support " + std::to_string(p + 1),
+                       "has another density, gravity or volume-term constant than the first",
+                       "give every soft support of a scene the same density");
+    }
+    const Eigen::Index nv = part.rest_.vertices.rows(), nt = part.rest_.tets.rows();
+    mesh.vertices.middleRows(v0, nv) = part.rest_.vertices;
+    mesh.tets.middleRows(t0, nt) = part.rest_.tets.array() + static_cast<int>(v0);
+    material.youngs_modulus.segment(t0, nt) = part.material_.youngs_modulus;
+    material.poisson_ratio.segment(t0, nt) = part.material_.poisson_ratio;
+    held.insert(held.end(), part.held_.begin(), part.held_.end());
+    v0 += nv;
+    t0 += nt;
+  }
+  return Create(std::move(mesh), std::move(held), std::move(material), first.options_, name);
 }
 
 ElasticPart ElasticPart::WithRestPositions(const Vertices& rest) const {

@@ -43,9 +43,17 @@ class ElasticPart {
   };
 
   // Validates and derives everything. Throws InputError (source = `name`) for an unusable
-  // mesh or material, flags of the wrong size, or no held vertex (a support needs a base).
+  // mesh or material, flags of the wrong size, or a connected component not held by at
+  // least three non-collinear vertices (it could float away or turn about its held line).
+  // One part may have several components: several soft supports in one scene (Join).
   static ElasticPart Create(TetMesh rest, std::vector<bool> held, TissueMaterial material,
                             const ElasticPartOptions& options, const std::string& name);
+
+  // Several parts as one (their tet meshes side by side, vertex and tet indices offset in
+  // order): the scene's soft supports, each keeping its own held base and material. They must
+  // share density and gravity (one ElasticPartOptions) and the material's volume-term
+  // constants. Throws InputError naming the part that differs.
+  static ElasticPart Join(const std::vector<const ElasticPart*>& parts, const std::string& name);
 
   // The same part on other rest positions (a designed rest shape): topology, held set,
   // material and stiffness pattern kept; rest data, masses and the boundary's positions

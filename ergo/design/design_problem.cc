@@ -197,8 +197,9 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
         designed_move.row(surface_to_part[i]) =
             support_positions.row(i) - initial_support_.vertices.row(i);
     try {
-      solver_.set_soft_support(std::make_shared<const ElasticPart>(
-          part.WithRestPositions(part.rest().vertices + rest_extension_->Extend(designed_move))));
+      out.soft_support = std::make_shared<const ElasticPart>(
+          part.WithRestPositions(part.rest().vertices + rest_extension_->Extend(designed_move)));
+      solver_.set_soft_support(out.soft_support);
     } catch (const InputError& error) {
       return fail(std::string("the design's rest shape cannot be used: ") + error.what());
     }

@@ -102,6 +102,9 @@ struct DesignEvaluation {
   // The equilibrium's springs, per-vertex forces and both surfaces' pressures: what the
   // reports and pictures show (nothing is rebuilt for output).
   ContactPressures pressures;
+  // A soft support: the foam at this design's rest shape, as the equilibrium used it (its
+  // deformed positions are the state's support displacement added). Null for a rigid one.
+  std::shared_ptr<const ElasticPart> soft_support;
   // Where this evaluation's time went (its total is this evaluation's wall time; the
   // equilibrium's parts are those of `equilibrium`, gathered with the rest).
   EvaluationTiming timing;

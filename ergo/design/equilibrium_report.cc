@@ -1,5 +1,7 @@
 #include "ergo/design/equilibrium_report.h"
 
+#include <glog/logging.h>
+
 #include "ergo/design/centre_of_pressure.h"
 #include "ergo/ergonomics/pressure_statistics.h"
 #include "ergo/mesh/vtu_writer.h"
@@ -64,6 +66,22 @@ void WriteSupportVtu(const std::string& path, const TriMesh& support,
   if (initial.rows() == n)
     fields.point_vectors.push_back({"displacement_m", support.vertices - initial});
   WriteVtu(path, support, fields, encoding);
+}
+
+Vertices SoftSupportPositions(const ElasticPart& part, const BodyState& state) {
+  return part.Positions(part.rest().vertices, state.support_displacement.size() > 0
+                                                  ? state.support_displacement
+                                                  : Eigen::VectorXd::Zero(part.size()));
+}
+
+TriMesh SoftSupportSurface(const ElasticPart& part, const TriMesh& surface,
+                           const Vertices& positions) {
+  const Eigen::VectorXi& to_part = part.boundary().surface_to_tet;
+  CHECK_EQ(to_part.size(), surface.vertices.rows());
+  TriMesh moved = surface;
+  for (Eigen::Index i = 0; i < moved.vertices.rows(); ++i)
+    moved.vertices.row(i) = positions.row(to_part[i]);
+  return moved;
 }
 
 void WriteSoftSupportVtu(const std::string& path, const ElasticPart& part,

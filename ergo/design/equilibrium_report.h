@@ -29,6 +29,14 @@ void WriteSupportVtu(const std::string& path, const TriMesh& support,
                      const ContactPressures& pressures, const Vertices& initial,
                      VtuEncoding encoding = VtuEncoding::kBinary);
 
+// A soft support's deformed vertices at `state` (its rest positions plus the state's support
+// displacement; the rest shape where the state has none).
+Vertices SoftSupportPositions(const ElasticPart& part, const BodyState& state);
+// The soft support's contact surface `surface` (vertex i is the part's
+// boundary().surface_to_tet[i]) moved to the part's `positions`.
+TriMesh SoftSupportSurface(const ElasticPart& part, const TriMesh& surface,
+                           const Vertices& positions);
+
 // Writes a soft support's deformed tet mesh: point fields displacement_m, held; cell fields
 // von_mises_stress_Pa (Cauchy), volume_change (det F − 1), youngs_modulus_Pa.
 void WriteSoftSupportVtu(const std::string& path, const ElasticPart& part,

@@ -15,6 +15,7 @@
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/primitives.h"
 #include "ergo/mesh/sparse_cholesky.h"
+#include "ergo/mesh/tet_components.h"
 #include "tests/support/dense_symmetric.h"
 #include "tests/support/finite_difference.h"
 
@@ -267,6 +268,91 @@ TEST(ElasticPart, RefusesAPartWithNothingHeldAndNamesIt) {
     FAIL() << "accepted a negative modulus";
   } catch (const InputError& error) {
     EXPECT_EQ(error.location(), "tet 2");
+  }
+}
+
+// Each connected component must be held over an area: two cubes side by side with only the
+// first's base held is refused naming the second (its first vertex), and so is a cube held
+// along one edge (it would turn about it).
+TEST(ElasticPart, RefusesAComponentHeldNowhereOrAlongALine) {
+  const ElasticPartOptions none;
+  const TetMesh cube = MakeTetGrid(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(0.01),
+                                   Eigen::Vector3i(2, 2, 2));
+  const Eigen::Index n = cube.vertices.rows();
+  TetMesh two = cube;
+  two.vertices.conservativeResize(2 * n, 3);
+  two.vertices.bottomRows(n) = cube.vertices.rowwise() + Eigen::RowVector3d(0.05, 0, 0);
+  two.tets.conservativeResize(2 * cube.tets.rows(), 4);
+  two.tets.bottomRows(cube.tets.rows()) = cube.tets.array() + static_cast<int>(n);
+  const TetComponents components = LabelTetComponents(two);
+  ASSERT_EQ(components.count, 2);
+  EXPECT_EQ(components.vertex_component[0], 0);
+  EXPECT_EQ(components.vertex_component[n], 1);
+  EXPECT_EQ(components.vertex_component.head(n).maxCoeff(), 0);
+  EXPECT_EQ(components.vertex_component.tail(n).minCoeff(), 1);
+
+  std::vector<bool> held(static_cast<size_t>(2 * n), false);
+  for (Eigen::Index v = 0; v < n; ++v) held[v] = cube.vertices(v, 1) < 1e-12;
+  try {
+    ElasticPart::Create(two, held, UniformMaterial(two.tets.rows(), 5e4, 0.3), none, "pair.msh");
+    FAIL() << "accepted a component with nothing held";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.source(), "pair.msh");
+    EXPECT_NE(error.location().find("component 1"), std::string::npos) << error.what();
+    EXPECT_NE(error.location().find("from vertex " + std::to_string(n)), std::string::npos)
+        << error.what();
+  }
+  std::vector<bool> edge(static_cast<size_t>(n), false);
+  for (Eigen::Index v = 0; v < n; ++v)
+    edge[v] = cube.vertices(v, 1) < 1e-12 && cube.vertices(v, 2) < 1e-12;
+  try {
+    ElasticPart::Create(cube, edge, UniformMaterial(cube.tets.rows(), 5e4, 0.3), none, "edge");
+    FAIL() << "accepted a cube held along one edge";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("along a line"), std::string::npos) << error.what();
+  }
+}
+
+// Join lays the parts side by side: vertices, tets, held flags and per-tet materials in
+// order, the same energy as the parts' sum at any positions; parts of another density refused.
+TEST(ElasticPart, JoinedPartsAreThePartsSideBySide) {
+  ElasticPartOptions heavy;
+  heavy.density = 50;
+  heavy.gravity = Eigen::Vector3d(0, -9.81, 0);
+  auto make = [&](const Eigen::Vector3d& lo, double modulus, const ElasticPartOptions& options) {
+    const TetMesh mesh =
+        MakeTetGrid(lo, lo + Eigen::Vector3d(0.02, 0.01, 0.02), Eigen::Vector3i(2, 1, 2));
+    std::vector<bool> base(static_cast<size_t>(mesh.vertices.rows()));
+    for (Eigen::Index v = 0; v < mesh.vertices.rows(); ++v)
+      base[v] = mesh.vertices(v, 1) < lo.y() + 1e-12;
+    return ElasticPart::Create(mesh, base, UniformMaterial(mesh.tets.rows(), modulus, 0.3), options,
+                               "block");
+  };
+  const ElasticPart a = make(Eigen::Vector3d::Zero(), 5e4, heavy);
+  const ElasticPart b = make(Eigen::Vector3d(0.1, 0, 0), 2e4, heavy);
+  const ElasticPart joined = ElasticPart::Join({&a, &b}, "a+b");
+  const Eigen::Index na = a.rest().vertices.rows(), nb = b.rest().vertices.rows();
+  ASSERT_EQ(joined.rest().vertices.rows(), na + nb);
+  EXPECT_EQ(joined.rest().tets(a.rest().tets.rows(), 0), b.rest().tets(0, 0) + na);
+  EXPECT_EQ(joined.size(), a.size() + b.size());
+  EXPECT_EQ(joined.material().youngs_modulus[a.rest().tets.rows()], 2e4);
+  EXPECT_EQ(joined.boundary().surface.triangles.rows(),
+            a.boundary().surface.triangles.rows() + b.boundary().surface.triangles.rows());
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> jitter(-5e-4, 5e-4);
+  Vertices pa = a.rest().vertices, pb = b.rest().vertices;
+  for (Vertices* p : {&pa, &pb})
+    for (Eigen::Index i = 0; i < p->size(); ++i) p->data()[i] += jitter(rng);
+  Vertices both(na + nb, 3);
+  both << pa, pb;
+  EXPECT_NEAR(joined.Energy(both), a.Energy(pa) + b.Energy(pb),
+              1e-12 * std::abs(a.Energy(pa) + b.Energy(pb)));
+  const ElasticPart light = make(Eigen::Vector3d(0.2, 0, 0), 5e4, ElasticPartOptions());
+  try {
+    ElasticPart::Join({&a, &light}, "a+light");
+    FAIL() << "joined parts of different densities";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location(), "soft support 2");
   }
 }
 

@@ -274,6 +274,78 @@ TEST_P(SoftSupportPotential, EquilibriumBalancesTheLoadOnTheBodyAndOnTheBase) {
       -load.y(), block_weight);
 }
 
+// Several soft supports are one part of several components (ElasticPart::Join). A block the
+// body never touches changes nothing: the body on block A joined with a far block B reaches
+// A's own equilibrium (B only sags under its weight, its base carrying exactly that); and a
+// body straddling two blocks has its load shared between their bases, which together carry
+// load plus weights to Newton's tolerance, each a large share.
+TEST(SoftSupports, JoinedBlocksCarryTheirSharesAndAnUntouchedOneChangesNothing) {
+  LayeredBodyOptions options;
+  options.lock = ParseCoreLock("tx,tz,rx,ry,rz");
+  options.external_force = Eigen::Vector3d(0, -20, 0);
+  const LayeredBody body =
+      testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options, Eigen::Vector3d(0, 0.06, 0));
+  auto solve = [&](std::shared_ptr<const ElasticPart> foam) {
+    const Support surface = SoftSupportSurface(*foam);
+    EquilibriumOptions eq;
+    eq.relative_tolerance = 1e-10;
+    auto solver = std::make_shared<EquilibriumSolver>(body, eq, foam);
+    const BodyState start = PlaceAboveSupport(body, RestState(body), surface, 1e-3).state;
+    const EquilibriumResult result = solver->Solve(surface, start);
+    EXPECT_TRUE(result.converged) << result.FullReport();
+    return std::make_pair(result, solver);
+  };
+  // Base reaction of the held vertices in [from, to) of the part.
+  auto reaction = [](const ElasticPart& part, const TotalPotential::Evaluation& e,
+                     Eigen::Index from, Eigen::Index to) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (Eigen::Index v = from; v < to; ++v)
+      if (part.held()[v]) sum += e.support.vertex_gradient.row(v).transpose();
+    return sum;
+  };
+
+  const auto a = MakeSoftBlock({-0.1, -0.04, -0.1}, {0.1, 0, 0.1}, {8, 3, 8}, 5e4, 60);
+  const auto far = MakeSoftBlock({0.5, -0.04, -0.1}, {0.6, 0, 0.1}, {4, 3, 8}, 2e4, 60);
+  const auto joined =
+      std::make_shared<const ElasticPart>(ElasticPart::Join({a.get(), far.get()}, "two blocks"));
+  ASSERT_EQ(joined->size(), a->size() + far->size());
+  ASSERT_EQ(joined->material().youngs_modulus.size(),
+            a->rest().tets.rows() + far->rest().tets.rows());
+  EXPECT_EQ(joined->material().youngs_modulus[a->rest().tets.rows()], 2e4);
+  const auto [alone, alone_solver] = solve(a);
+  const auto [both, both_solver] = solve(joined);
+  EXPECT_LE((both.contact_force - alone.contact_force).norm(), 1e-8 * body.TotalLoad().norm());
+  EXPECT_NEAR(both.state.centre.y(), alone.state.centre.y(), 1e-9);
+  const Eigen::VectorXd a_part = both.state.support_displacement.head(a->size());
+  EXPECT_LE((a_part - alone.state.support_displacement).lpNorm<Eigen::Infinity>(), 1e-9);
+  const Eigen::Index na = a->rest().vertices.rows();
+  const Eigen::Vector3d far_base =
+      reaction(*joined, both_solver->last_evaluation(), na, joined->rest().vertices.rows());
+  EXPECT_NEAR(far_base.y(), far->vertex_mass().sum() * 9.81, 1e-8);  // residual ≤ 2e-9 N
+
+  // Straddling: two mirror-image blocks 2 cm apart under the cube's middle.
+  const auto left = MakeSoftBlock({-0.11, -0.04, -0.1}, {-0.01, 0, 0.1}, {5, 3, 10}, 5e4, 60);
+  TetMesh mirrored = left->rest();
+  mirrored.vertices.col(0) *= -1;
+  for (Eigen::Index t = 0; t < mirrored.tets.rows(); ++t)
+    std::swap(mirrored.tets(t, 2), mirrored.tets(t, 3));  // mirroring turns every tet
+  const auto right = MakeFoam(mirrored, -0.04, 5e4, 60);
+  const auto pair =
+      std::make_shared<const ElasticPart>(ElasticPart::Join({left.get(), right.get()}, "pair"));
+  const auto [straddle, straddle_solver] = solve(pair);
+  const TotalPotential::Evaluation& e = straddle_solver->last_evaluation();
+  const Eigen::Index nl = left->rest().vertices.rows();
+  const Eigen::Vector3d on_left = reaction(*pair, e, 0, nl);
+  const Eigen::Vector3d on_right = reaction(*pair, e, nl, pair->rest().vertices.rows());
+  const double weights = pair->vertex_mass().sum() * 9.81, load = -body.TotalLoad().y();
+  EXPECT_NEAR(on_left.y() + on_right.y(), load + weights, 1e-6 * load);
+  // Both carry a large share; not half each: the cube's tets are not mirror-symmetric and its
+  // bottom vertices at x = ±16.7 mm sit 6.7 mm from the gap's edges (measured 57 / 43 %).
+  EXPECT_NEAR(on_left.y() / (on_left.y() + on_right.y()), 0.5, 0.2);
+  std::printf("[ soft     ] two blocks: bases carry %.4f N and %.4f N of %.4f N + %.4f N\n",
+              on_left.y(), on_right.y(), load, weights);
+}
+
 INSTANTIATE_TEST_SUITE_P(ContactOptions, SoftSupportPotential, ::testing::Values(true, false),
                          [](const auto& info) {
                            return info.param ? "two_way_asked" : "one_way_asked";

@@ -415,6 +415,14 @@ TEST(ToolsOptimize, ASoftSupportsRestShapeIsOptimised) {
   const Json summary = ReadJsonFile(dir + "/soft/summary.json");
   EXPECT_GT(GetNumber(summary, "evaluations", "summary"), 0.0);
   EXPECT_TRUE(fs::exists(dir + "/soft/support_optimized.stl"));
+  // The foam's solid at both designs, deformed under the body, with its stress and strain.
+  for (const char* tag : {"initial", "optimized"}) {
+    const std::string solid = Read(dir + "/soft/support_solid_" + tag + ".vtu");
+    EXPECT_NE(solid.find("von_mises_stress_Pa"), std::string::npos) << tag;
+    EXPECT_NE(solid.find("volume_change"), std::string::npos) << tag;
+    EXPECT_NE(Read(dir + "/soft/support_" + tag + ".vtu").find("displacement_m"), std::string::npos)
+        << tag;
+  }
   EXPECT_NE(Read(dir + "/soft.log").find("soft support"), std::string::npos)
       << Read(dir + "/soft.log");
   fs::remove_all(dir);

@@ -217,6 +217,26 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
   EXPECT_EQ(refused.status, 2) << refused.output;
   EXPECT_NE(refused.output.find("held_bad.txt:line 2"), std::string::npos) << refused.output;
 
+  // Two soft supports, one tet file each: the slab cut in two under the ball (a 10 mm gap),
+  // both bases held; the ball rests on both. A held-file list of the wrong length is refused.
+  WriteTetMesh(*dir_ + "/left_mm.msh", MakeTetGrid({-150, -110, -150}, {-5, -60, 150}, {3, 2, 6}));
+  WriteTetMesh(*dir_ + "/right_mm.msh", MakeTetGrid({5, -110, -150}, {150, -60, 150}, {3, 2, 6}));
+  const std::string two_slabs = "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
+                                "/ball --support_tets=" + *dir_ + "/left_mm.msh," + *dir_ +
+                                "/right_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz "
+                                "--contact_stiffness=1e8 --support_model=soft ";
+  const CommandResult two = RunCommand(two_slabs + "--out=" + *dir_ + "/soft_two");
+  ASSERT_EQ(two.status, 0) << two.output;
+  const Json two_summary = ReadJsonFile(*dir_ + "/soft_two/summary.json");
+  EXPECT_TRUE(GetBool(two_summary, "converged", "summary"));
+  EXPECT_NEAR(GetMember(two_summary, "total_contact_force_N", "summary").at(1).get<double>(),
+              -GetMember(two_summary, "load_N", "summary").at(1).get<double>(),
+              1e-6 * std::abs(GetMember(two_summary, "load_N", "summary").at(1).get<double>()));
+  const CommandResult one_held =
+      RunCommand(two_slabs + "--support_held=" + *dir_ + "/held.txt --out=" + *dir_ + "/soft_2h");
+  EXPECT_EQ(one_held.status, 2) << one_held.output;
+  EXPECT_NE(one_held.output.find("--support_held"), std::string::npos) << one_held.output;
+
   // An open support surface is refused as a support, before any meshing.
   {
     TriMesh open = MakeBox({-150, -110, -150}, {150, -60, 150}, {2, 1, 2});

@@ -101,8 +101,20 @@ void WriteDesignVtus(const std::string& dir, const std::string& tag, const Layer
   const std::filesystem::path out(dir);
   WriteDeformedBodyVtu((out / ("body_" + tag + ".vtu")).string(), body,
                        report.evaluation.equilibrium.state, report.pressures, vtu_encoding);
-  WriteSupportVtu((out / ("support_" + tag + ".vtu")).string(), report.support, report.pressures,
+  const std::shared_ptr<const ElasticPart>& foam = report.evaluation.soft_support;
+  if (!foam) {
+    WriteSupportVtu((out / ("support_" + tag + ".vtu")).string(), report.support, report.pressures,
+                    initial_support, vtu_encoding);
+    return;
+  }
+  // A soft support: its surface deformed under the body (displacement from the initial rest
+  // shape) and its solid with stress and strain.
+  const Vertices positions = SoftSupportPositions(*foam, report.evaluation.equilibrium.state);
+  WriteSupportVtu((out / ("support_" + tag + ".vtu")).string(),
+                  SoftSupportSurface(*foam, report.support, positions), report.pressures,
                   initial_support, vtu_encoding);
+  WriteSoftSupportVtu((out / ("support_solid_" + tag + ".vtu")).string(), *foam, positions,
+                      vtu_encoding);
 }
 
 void WriteSupportMeshes(const std::string& dir, const std::string& tag, const TriMesh& support) {

@@ -24,8 +24,8 @@ struct DesignReport {
   TriMesh support;
   DesignEvaluation evaluation;
   ContactPressures pressures;
-  double peak_pressure = 0;      // skin side, Pa
-  double skin_contact_area = 0;  // Σ rest areas of skin vertices in contact, m²
+  double peak_pressure = 0;             // skin side, Pa
+  double skin_contact_area = 0;         // Σ rest areas of skin vertices in contact, m²
   CentreOfPressure centre_of_pressure;  // of the skin's contact forces (centre_of_pressure.h)
 };
 
@@ -37,7 +37,8 @@ DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorX
                               DesignEvaluation evaluation);
 
 // DIR/body_TAG.vtu and DIR/support_TAG.vtu (pressures; the support's displacement from
-// `initial_support`), in `vtu_encoding`.
+// `initial_support`), in `vtu_encoding`. A soft support's surface is written deformed, and its
+// solid as DIR/support_solid_TAG.vtu (stress, volume change; design.h WriteSoftSupportVtu).
 void WriteDesignVtus(const std::string& dir, const std::string& tag, const LayeredBody& body,
                      const DesignReport& report, const Vertices& initial_support,
                      VtuEncoding vtu_encoding);

@@ -15,6 +15,7 @@
 #include "ergo/contact/support.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/split_list.h"
 #include "ergo/mesh/text_reader.h"
 #include "problems/soft_support_scenario.h"
 #include "tools/common/flag_checks.h"
@@ -30,10 +31,13 @@ DEFINE_double(support_density, 0,
               "soft support: density in kg/m³ for its own weight (foam 30–80); 0 = weightless");
 DEFINE_string(support_tets, "",
               "soft support: its tet mesh (.msh, or a TetGen .node/.ele pair, in --unit) instead "
-              "of meshing the support surface; the vertices on its lowest plane are held");
+              "of meshing the support surface; the vertices on its lowest plane are held. "
+              "Several soft supports: a comma-separated list (one part, each mesh its own "
+              "component with its own base)");
 DEFINE_string(support_held, "",
               "soft support from --support_tets: a text file of the held vertices' 0-based "
-              "indices (whitespace-separated, # comments) instead of its lowest plane");
+              "indices (whitespace-separated, # comments) instead of its lowest plane; with "
+              "several --support_tets, one file per mesh, comma-separated (empty: lowest plane)");
 DEFINE_double(soft_support_edge_length, 0.01,
               "soft support meshed from the surface: tet edge length at its top, m");
 DEFINE_double(soft_support_base_edge_length, 0.03,
@@ -100,20 +104,47 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
                                                         const Eigen::Vector3d& gravity,
                                                         TriMesh* contact_surface) {
   CheckSoftSupportFlags();
+  ElasticPartOptions options;
+  options.density = FLAGS_support_density;
+  options.gravity = FLAGS_support_density > 0 ? gravity : Eigen::Vector3d::Zero();
+  if (!FLAGS_support_tets.empty()) {
+    // One part per tet mesh, joined: several soft supports in one scene.
+    const std::vector<std::string> files = SplitList(FLAGS_support_tets, ',');
+    std::vector<std::string> held_files = SplitList(FLAGS_support_held, ',');
+    if (!FLAGS_support_held.empty() && held_files.size() != files.size()) {
+      throw InputError("--support_held", "",
+                       std::to_string(held_files.size()) + " held-vertex files for " +
+                           std::to_string(files.size()) + " --support_tets meshes",
+                       "give one per mesh, comma-separated (empty for its lowest plane)");
+    }
+    held_files.resize(files.size());
+    std::vector<ElasticPart> parts;
+    for (size_t i = 0; i < files.size(); ++i) {
+      TetMesh mesh = ReadTetMesh(files[i], ReadOptions{unit});
+      // Meshers disagree on orientation: turn inverted tets, refuse flat ones (by name).
+      for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
+        if (TetVolume(mesh, t) < 0) std::swap(mesh.tets(t, 2), mesh.tets(t, 3));
+      const double size =
+          (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
+      std::vector<bool> held = held_files[i].empty()
+                                   ? BottomVertices(mesh, 1e-6 * size)
+                                   : ReadHeldVertices(held_files[i], mesh.vertices.rows());
+      TissueMaterial material = UniformMaterial(mesh.tets.rows(), FLAGS_support_youngs_modulus,
+                                                FLAGS_support_poisson_ratio);
+      parts.push_back(ElasticPart::Create(std::move(mesh), std::move(held), std::move(material),
+                                          options, files[i]));
+    }
+    std::vector<const ElasticPart*> pointers;
+    for (const ElasticPart& part : parts) pointers.push_back(&part);
+    auto part = std::make_shared<const ElasticPart>(
+        parts.size() == 1 ? std::move(parts.front())
+                          : ElasticPart::Join(pointers, FLAGS_support_tets));
+    *contact_surface = part->boundary().surface;
+    return part;
+  }
   TetMesh mesh;
   std::vector<bool> held;
-  std::string name = source;
-  if (!FLAGS_support_tets.empty()) {
-    name = FLAGS_support_tets;
-    mesh = ReadTetMesh(FLAGS_support_tets, ReadOptions{unit});
-    // Meshers disagree on orientation: turn inverted tets, refuse flat ones (by name).
-    for (Eigen::Index t = 0; t < mesh.tets.rows(); ++t)
-      if (TetVolume(mesh, t) < 0) std::swap(mesh.tets(t, 2), mesh.tets(t, 3));
-    const double size =
-        (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm();
-    held = FLAGS_support_held.empty() ? BottomVertices(mesh, 1e-6 * size)
-                                      : ReadHeldVertices(FLAGS_support_held, mesh.vertices.rows());
-  } else {
+  {
     // The support check first (closed, manifold, outward): Mesh_3 of an open surface gives no
     // solid, and its message would blame the edge length.
     Support(surface, source);
@@ -125,13 +156,10 @@ std::shared_ptr<const ElasticPart> SoftSupportFromFlags(const TriMesh& surface,
     mesh = std::move(solid.mesh);
     held = std::move(solid.base);
   }
-  ElasticPartOptions options;
-  options.density = FLAGS_support_density;
-  options.gravity = FLAGS_support_density > 0 ? gravity : Eigen::Vector3d::Zero();
   TissueMaterial material =
       UniformMaterial(mesh.tets.rows(), FLAGS_support_youngs_modulus, FLAGS_support_poisson_ratio);
   auto part = std::make_shared<const ElasticPart>(
-      ElasticPart::Create(std::move(mesh), std::move(held), std::move(material), options, name));
+      ElasticPart::Create(std::move(mesh), std::move(held), std::move(material), options, source));
   *contact_surface = part->boundary().surface;
   return part;
 }

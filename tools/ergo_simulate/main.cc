@@ -215,14 +215,8 @@ int Run() {
                        vtu_encoding);
   if (soft_support) {
     // The deformed support: its surface (pressures, displacement from rest) and its solid.
-    const Vertices positions = soft_support->Positions(
-        soft_support->rest().vertices, result.state.support_displacement.size() > 0
-                                           ? result.state.support_displacement
-                                           : Eigen::VectorXd::Zero(soft_support->size()));
-    TriMesh deformed = support_mesh;
-    const Eigen::VectorXi& to_part = soft_support->boundary().surface_to_tet;
-    for (Eigen::Index i = 0; i < deformed.vertices.rows(); ++i)
-      deformed.vertices.row(i) = positions.row(to_part[i]);
+    const Vertices positions = SoftSupportPositions(*soft_support, result.state);
+    const TriMesh deformed = SoftSupportSurface(*soft_support, support_mesh, positions);
     WriteSupportVtu((out / "support.vtu").string(), deformed, solved.pressures,
                     support_mesh.vertices, vtu_encoding);
     WriteSoftSupportVtu((out / "support_solid.vtu").string(), *soft_support, positions,
