@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ergo/design/contact_pressures.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/equilibrium/placement.h"
+#include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/ergonomics/pressure_statistics.h"
 
 namespace ergo {

@@ -7,8 +7,9 @@
 #include <glog/logging.h>
 
 #include "ergo/design/rest_shape_gradient.h"
-#include "ergo/design/score_gradient.h"
+#include "ergo/design/rigid_shape_gradient.h"
 #include "ergo/equilibrium/placement.h"
+#include "ergo/ergonomics/pressure_score.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/preconditioned_cg.h"
 #include "ergo/mesh/seconds_since.h"
@@ -282,10 +283,16 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
   // Pressures of both surfaces from the springs the equilibrium used (Eq. 11–12, Fig. 4).
   mark = Clock::now();
   out.pressures = pressures_.Evaluate(e.contacts, support_.vertex_areas());
-  out.zeta_human = out.pressures.human.cost;
-  out.zeta_support = out.pressures.support.cost;
-  out.zeta = out.zeta_human + (options_.score_support_side ? out.zeta_support : 0.0);
   timing.pressure_seconds = SecondsSince(mark);
+  // ζ of them and, for the gradient, its explicit partials (timed with the adjoint that
+  // chains them, as the time split documents).
+  mark = Clock::now();
+  const PressureScore score =
+      ScorePressures(out.pressures, body_, options_.score_support_side, with_gradient);
+  if (with_gradient) timing.adjoint_seconds += SecondsSince(mark);
+  out.zeta_human = score.human;
+  out.zeta_support = score.support;
+  out.zeta = score.value;
   mark = Clock::now();
   const SmoothnessValue psi =
       EvaluateSmoothness(support_positions, support_laplacian_, options_.taubin);
@@ -302,8 +309,8 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
     if (options_.soft_support) {
       // dζ/dX at every deformed position fixed (rest_shape_gradient.h), pulled back through
       // the interior's extension to the designed boundary.
-      const RestShapeGradient rest = SoftSupportRestGradient(
-          potential, state, e, out.pressures, options_.score_support_side, &adjoint_cholesky_);
+      const RestShapeGradient rest =
+          SoftSupportRestGradient(potential, state, e, score, &adjoint_cholesky_);
       ++timing.adjoint_factorizations;
       if (!rest.ok) {
         timing.adjoint_seconds += SecondsSince(mark);
@@ -315,44 +322,18 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       for (Eigen::Index i = 0; i < surface_to_part.size(); ++i)
         d_support.row(i) = designed.row(surface_to_part[i]);
     } else {
-      ScorePartials partials =
-          PressureScorePartials(out.pressures, body_, options_.score_support_side);
-      // Adjoint (Eq. 20): K̂ z = (∂ζ/∂y)ᵀ, then subtract zᵀ ∂G/∂x (Eq. 19).
-      const Eigen::VectorXd rhs =
-          potential.system().ReduceVertexGradient(state, e.positions, partials.body);
-      if (rhs.squaredNorm() > 0) {
-        // The adjoint system with the exact K̂ at y*: conjugate gradients preconditioned by
-        // the Newton factor (of K̂ at the last iterate, next to y*), else a fresh
-        // factorisation.
-        Eigen::VectorXd z;
-        const SparseCholesky& newton_factor = solver_.factor();
-        if (newton_factor.factorized()) {
-          const PcgResult cg =
-              PreconditionedConjugateGradient(e.hessian(), newton_factor, rhs, 1e-12, 30);
-          timing.adjoint_pcg_iterations += cg.iterations;
-          if (cg.converged) z = cg.x;
-        }
-        if (z.size() == 0) {
-          const FactorizationStatus factor = adjoint_cholesky_.Factorize(e.hessian());
-          ++timing.adjoint_factorizations;
-          if (!factor.ok) {
-            timing.adjoint_seconds += SecondsSince(mark);
-            return fail("the exact Hessian at the equilibrium is not positive definite (" +
-                        factor.message +
-                        "): the equilibrium is not a strict minimum, so dy/dx is undefined");
-          }
-          z = adjoint_cholesky_.Solve(rhs);
-        }
-        const Vertices velocity =
-            potential.system().layout().VertexVelocity(body_, state, e.positions, z);
-        const SupportShapeGradient contraction = ResidualShapeContraction(
-            out.pressures.contacts, body_, out.pressures.support_areas, velocity);
-        partials.support.position -= contraction.position;
-        partials.support.area -= contraction.area;
-      }
+      // The adjoint through the rigid support's surface (rigid_shape_gradient.h).
       const TriMesh support_mesh{support_positions, initial_support_.triangles};
-      d_support =
-          partials.support.position + ChainSupportAreas(partials.support.area, support_mesh);
+      const RigidShapeGradient rigid =
+          RigidSupportShapeGradient(potential, state, e, out.pressures, score, support_mesh,
+                                    solver_.factor(), &adjoint_cholesky_);
+      timing.adjoint_pcg_iterations += rigid.pcg_iterations;
+      timing.adjoint_factorizations += rigid.factorizations;
+      if (!rigid.ok) {
+        timing.adjoint_seconds += SecondsSince(mark);
+        return fail(rigid.message);
+      }
+      d_support = rigid.gradient;
     }
     out.zeta_gradient = parameterization_.PullBack(d_support);
     timing.adjoint_seconds += SecondsSince(mark);

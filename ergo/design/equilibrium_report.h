@@ -8,8 +8,8 @@
 
 #include "ergo/body/body_state.h"
 #include "ergo/body/elastic_part.h"
-#include "ergo/design/contact_pressures.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/vtu_writer.h"
 

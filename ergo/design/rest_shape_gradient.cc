@@ -2,19 +2,19 @@
 
 #include <glog/logging.h>
 
-#include "ergo/design/score_gradient.h"
+#include "ergo/ergonomics/score_gradient.h"
 
 namespace ergo {
 
 RestShapeGradient SoftSupportRestGradient(const TotalPotential& potential, const BodyState& state,
                                           const TotalPotential::Evaluation& e,
-                                          const ContactPressures& pressures, bool support_side,
-                                          SparseCholesky* cholesky) {
+                                          const PressureScore& score, SparseCholesky* cholesky) {
   CHECK(potential.soft_support()) << "a rest-shape gradient needs a soft support";
   const ElasticPart& part = *potential.soft_support();
   const ReducedLayout& layout = potential.layout();
   const Eigen::VectorXi& surface_to_part = part.boundary().surface_to_tet;
-  const ScorePartials partials = PressureScorePartials(pressures, potential.body(), support_side);
+  CHECK(score.has_partials) << "the adjoint needs ζ's partials (ScorePressures with_partials)";
+  const ScorePartials& partials = score.partials;
 
   // (∂ζ/∂y)ᵀ: the body's through B, the foam's free vertices' directly.
   Eigen::VectorXd rhs = potential.system().ReduceVertexGradient(state, e.positions, partials.body);

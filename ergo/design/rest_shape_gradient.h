@@ -10,8 +10,8 @@
 
 #include <string>
 
-#include "ergo/design/contact_pressures.h"
 #include "ergo/equilibrium/total_potential.h"
+#include "ergo/ergonomics/pressure_score.h"
 #include "ergo/mesh/sparse_cholesky.h"
 
 namespace ergo {
@@ -23,11 +23,11 @@ struct RestShapeGradient {
 };
 
 // `e`: the evaluation at `state` with the exact K̂ (TotalPotential::Evaluate with
-// HessianKind::kExact and the contact Hessians); `pressures`: the score's pressures of its
-// contacts. `support_side` false: ζ's skin side alone. `cholesky` is (re)analysed as needed.
+// HessianKind::kExact and the contact Hessians); `score`: ζ of its contacts' pressures with
+// its partials (ScorePressures with_partials; which halves ζ holds is the score's).
+// `cholesky` is (re)analysed as needed.
 RestShapeGradient SoftSupportRestGradient(const TotalPotential& potential, const BodyState& state,
                                           const TotalPotential::Evaluation& e,
-                                          const ContactPressures& pressures, bool support_side,
-                                          SparseCholesky* cholesky);
+                                          const PressureScore& score, SparseCholesky* cholesky);
 
 }  // namespace ergo

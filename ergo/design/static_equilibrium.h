@@ -20,8 +20,8 @@
 #include "ergo/body/elastic_part.h"
 #include "ergo/body/layered_body.h"
 #include "ergo/contact/stiffness_calibration.h"
-#include "ergo/design/contact_pressures.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
+#include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/tri_mesh.h"
 

@@ -14,11 +14,12 @@
 #include "ergo/body/core_lock.h"
 #include "ergo/body/elastic_part.h"
 #include "ergo/body/rest_extension.h"
-#include "ergo/design/contact_pressures.h"
 #include "ergo/design/design_problem.h"
 #include "ergo/design/rest_shape_gradient.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/equilibrium/placement.h"
+#include "ergo/ergonomics/contact_pressures.h"
+#include "ergo/ergonomics/pressure_score.h"
 #include "ergo/mesh/primitives.h"
 #include "ergo/mesh/surface_geometry.h"
 #include "tests/support/body/body_fixtures.h"
@@ -122,8 +123,8 @@ TEST_F(SoftRestShape, ScoreGradientMatchesFiniteDifferencesThroughTheEquilibrium
   const ContactPressures pressures =
       evaluator_->Evaluate(e.contacts, BarycentricVertexAreas(part->boundary().surface));
   SparseCholesky cholesky;
-  const RestShapeGradient gradient =
-      SoftSupportRestGradient(potential, at.state, e, pressures, true, &cholesky);
+  const RestShapeGradient gradient = SoftSupportRestGradient(
+      potential, at.state, e, ScorePressures(pressures, *body_, true, true), &cholesky);
   ASSERT_TRUE(gradient.ok) << gradient.message;
   const Vertices design_gradient = extension_->PullBack(gradient.gradient);
   ASSERT_GT(design_gradient.norm(), 0);

@@ -10,8 +10,8 @@
 #include <Eigen/Core>
 
 #include "ergo/design/centre_of_pressure.h"
-#include "ergo/design/contact_pressures.h"
 #include "ergo/design/design_problem.h"
+#include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/vtu_writer.h"
 #include "problems/scenario.h"

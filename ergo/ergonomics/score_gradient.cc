@@ -1,4 +1,4 @@
-#include "ergo/design/score_gradient.h"
+#include "ergo/ergonomics/score_gradient.h"
 
 #include <glog/logging.h>
 

@@ -2,8 +2,9 @@
 // springs the equilibrium used (ergo/contact/surface_contact.h, both directions): at every
 // skin vertex inside the support and every support vertex inside the skin the model's
 // pressure p = κg (its load p·s over its barycentric area: the skin's at rest, the
-// support's at its current shape), smoothed and scored by ergo/ergonomics. Shared by the design objective, ergo_simulate and ergo_optimize, so every
-// output reports the forces the solver applied.
+// support's at its current shape), smoothed and costed per surface (pressure_cost.h); ζ of
+// them is pressure_score.h. Shared by the design objective, ergo_simulate and ergo_optimize,
+// so every output reports the forces the solver applied.
 #pragma once
 
 #include <Eigen/Core>

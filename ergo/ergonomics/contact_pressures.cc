@@ -1,4 +1,4 @@
-#include "ergo/design/contact_pressures.h"
+#include "ergo/ergonomics/contact_pressures.h"
 
 #include <glog/logging.h>
 

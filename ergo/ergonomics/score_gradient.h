@@ -15,7 +15,7 @@
 #include <Eigen/Core>
 
 #include "ergo/body/layered_body.h"
-#include "ergo/design/contact_pressures.h"
+#include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/mesh/tri_mesh.h"
 
 namespace ergo {
