@@ -119,7 +119,12 @@ LayerMesherResult MeshImplicitLayer(const RegionFunction& region, const Eigen::A
   }
   if (initialised) {
     CGAL::refine_mesh_3(c3t3, domain, mesh_criteria, params::no_perturb(), params::no_exude());
-  } else {
+    // Seeds that all lie on a few planes (a slab's gridded top and four base corners) can
+    // start a refinement that restricts no cell to the region: start again from CGAL's own
+    // initial points.
+    if (c3t3.number_of_cells_in_complex() == 0) initialised = false;
+  }
+  if (!initialised) {
     result.initial_points = 0;
     c3t3 =
         CGAL::make_mesh_3<Complex>(domain, mesh_criteria, params::no_perturb(), params::no_exude());

@@ -4,6 +4,7 @@
 // whose design moves the foam's rest shape.
 #include "problems/soft_support_scenario.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include "ergo/body/support_solid.h"
 #include "ergo/body/tissue_material.h"
 #include "ergo/mesh/primitives.h"
+#include "problems/shoe_scenario.h"
 
 namespace ergo {
 namespace {
@@ -45,6 +47,26 @@ TEST(Problems, ABoxTopsDesignedRegionCarriesOverToItsFoamBoundary) {
   EXPECT_GT(designed, 50);
   EXPECT_EQ(inner_top_designed, inner_top);
   EXPECT_TRUE(TransferActiveVertices(box, {}, boundary).empty());
+}
+
+// The quick shoe's sole (a 2 cm slab whose gridded top is designed and whose base is four
+// corners) becomes foam at 5 mm edges: its surface vertices, all on a few planes, once seeded
+// a Mesh_3 refinement that kept no tet ("thinner than its edges" at every edge length). The
+// solid fills the sole's volume and its base is held.
+TEST(Problems, TheQuickShoesSoleBecomesFoam) {
+  const Scenario shoe = MakeShoeScenario(ShoeScenarioOptions::FromPreset("quick"));
+  const Eigen::Vector3d lo = shoe.support.vertices.colwise().minCoeff();
+  const Eigen::Vector3d hi = shoe.support.vertices.colwise().maxCoeff();
+  SupportSolidOptions options;
+  options.top_edge_length = 0.005;
+  options.base_edge_length = 0.008;
+  const SupportSolid solid = MeshSupportSolid(shoe.support, options, "shoe sole");
+  ASSERT_GT(solid.mesh.tets.rows(), 0);
+  double volume = 0;
+  for (Eigen::Index t = 0; t < solid.mesh.tets.rows(); ++t) volume += TetVolume(solid.mesh, t);
+  // Mesh_3 rounds the slab's edges at a tenth of the top's edge (ergo/body/README.md §2b).
+  EXPECT_NEAR(volume, (hi - lo).prod(), 0.03 * (hi - lo).prod());
+  EXPECT_GT(std::count(solid.base.begin(), solid.base.end(), true), 100);
 }
 
 }  // namespace
