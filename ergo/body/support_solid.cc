@@ -49,6 +49,13 @@ SupportSolid MeshSupportSolid(const TriMesh& surface, const SupportSolidOptions&
   const Eigen::Vector3d lo = surface.vertices.colwise().minCoeff();
   const Eigen::Vector3d hi = surface.vertices.colwise().maxCoeff();
   const double height = hi.y() - lo.y();
+  if (!(top <= height)) {
+    // Mesh_3 then keeps no tet, or a few flat ones on a base it cannot hold.
+    throw InputError(source, "edge length",
+                     "the support is " + Millimetres(height) + " tall, less than the top's " +
+                         Millimetres(top) + " edges",
+                     "use edges of at most a third of its height");
+  }
   const double volume_estimate = (hi - lo).prod();
   const double mean_edge = 0.5 * (top + bottom_edge);
   // About 2.3 tets per regular-tet volume (layer_builder.cc measured it on shells).
@@ -88,8 +95,11 @@ SupportSolid MeshSupportSolid(const TriMesh& surface, const SupportSolidOptions&
       },
       Eigen::AlignedBox3d(lo - margin, hi + margin), seeds, criteria);
   if (meshed.mesh.tets.rows() == 0) {
-    throw InputError(source, "", "Mesh_3 produced no tets: the support is thinner than its edges",
-                     "use a shorter edge length");
+    throw InputError(source, "",
+                     "Mesh_3 produced no tets: the support is " + Millimetres(height) +
+                         " tall, meshed with " + Millimetres(top) + "–" + Millimetres(bottom_edge) +
+                         " edges",
+                     "use edges of at most a third of its height");
   }
   SupportSolid solid;
   solid.mesh = meshed.mesh;

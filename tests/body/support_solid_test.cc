@@ -84,6 +84,17 @@ TEST(SupportSolid, RefusesEdgeLengthsThatCannotWork) {
     EXPECT_EQ(error.source(), "box.stl");
     EXPECT_NE(std::string(error.what()).find("million tets"), std::string::npos);
   }
+  // A 2 mm sheet meshed with 5–10 cm edges: no tet fits; refused before Mesh_3, saying how
+  // tall it is (Mesh_3 left a few flat tets on a base it could not hold).
+  const TriMesh sheet = MakeBox({0, 0, 0}, {0.2, 0.002, 0.2}, {4, 1, 4});
+  options.top_edge_length = 0.05;
+  options.base_edge_length = 0.1;
+  try {
+    const SupportSolid solid = MeshSupportSolid(sheet, options, "sheet.stl");
+    FAIL() << "meshed a 2 mm sheet with 5 cm edges into " << solid.mesh.tets.rows() << " tets";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("2 mm tall"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ TEST(Problems, ABoxTopsDesignedRegionCarriesOverToItsFoamBoundary) {
 
 // The quick shoe's sole (a 2 cm slab whose gridded top is designed and whose base is four
 // corners) becomes foam at 5 mm edges: its surface vertices, all on a few planes, once seeded
-// a Mesh_3 refinement that kept no tet ("thinner than its edges" at every edge length). The
+// a Mesh_3 refinement that kept no tet ("Mesh_3 produced no tets" at every edge length). The
 // solid fills the sole's volume and its base is held.
 TEST(Problems, TheQuickShoesSoleBecomesFoam) {
   const Scenario shoe = MakeShoeScenario(ShoeScenarioOptions::FromPreset("quick"));

@@ -88,6 +88,13 @@ def test_builtin_optimiser_result_and_history(bump):
     assert result["time_split"]["equilibria"] == result["evaluations"]
     assert result["history"][-1]["time_split"]["equilibria"] <= result["evaluations"]
     assert result["history"][0]["iteration"] == 0
+    # φ's named terms, in the result and every history entry: φ = ζ + γψ by name.
+    for entry in [result] + result["history"]:
+        terms = entry["terms"]
+        assert sorted(terms) == ["psi", "zeta"]
+        assert entry["zeta"] == terms["zeta"]["value"]
+        assert entry["phi"] == pytest.approx(
+            sum(t["weight"] * t["value"] for t in terms.values()), rel=1e-12)
     assert result["x"].shape == (bump.problem().num_parameters,)
     # A callback returning False stops the run at once.
     stopped = ergo.minimize(bump.problem(), max_evals=20, progress=lambda record: False)
