@@ -310,8 +310,9 @@ DesignEvaluation DesignProblem::Evaluate(const Eigen::VectorXd& x, bool with_gra
       // dζ/dX at every deformed position fixed (rest_shape_gradient.h), pulled back through
       // the interior's extension to the designed boundary.
       const RestShapeGradient rest =
-          SoftSupportRestGradient(potential, state, e, score, &adjoint_cholesky_);
-      ++timing.adjoint_factorizations;
+          SoftSupportRestGradient(potential, state, e, score, solver_.factor(), &adjoint_cholesky_);
+      timing.adjoint_pcg_iterations += rest.pcg_iterations;
+      timing.adjoint_factorizations += rest.factorizations;
       if (!rest.ok) {
         timing.adjoint_seconds += SecondsSince(mark);
         return fail(rest.message);

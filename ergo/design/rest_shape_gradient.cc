@@ -2,13 +2,16 @@
 
 #include <glog/logging.h>
 
+#include "ergo/design/adjoint_solve.h"
 #include "ergo/ergonomics/score_gradient.h"
 
 namespace ergo {
 
 RestShapeGradient SoftSupportRestGradient(const TotalPotential& potential, const BodyState& state,
                                           const TotalPotential::Evaluation& e,
-                                          const PressureScore& score, SparseCholesky* cholesky) {
+                                          const PressureScore& score,
+                                          const SparseCholesky& newton_factor,
+                                          SparseCholesky* cholesky) {
   CHECK(potential.soft_support()) << "a rest-shape gradient needs a soft support";
   const ElasticPart& part = *potential.soft_support();
   const ReducedLayout& layout = potential.layout();
@@ -30,15 +33,14 @@ RestShapeGradient SoftSupportRestGradient(const TotalPotential& potential, const
   for (Eigen::Index i = 0; i < surface_to_part.size(); ++i)
     out.gradient.row(surface_to_part[i]) += area_term.row(i);
   if (rhs.squaredNorm() > 0) {
-    cholesky->AnalyzeIfChanged(e.hessian());
-    const FactorizationStatus factor = cholesky->Factorize(e.hessian());
-    if (!factor.ok) {
-      out.message = "the exact Hessian at the equilibrium is not positive definite (" +
-                    factor.message + "): dy/dX is undefined";
+    const AdjointSolution adjoint = SolveAdjoint(e.hessian(), rhs, newton_factor, cholesky);
+    out.pcg_iterations = adjoint.pcg_iterations;
+    out.factorizations = adjoint.factorizations;
+    if (!adjoint.ok) {
+      out.message = adjoint.message;
       return out;
     }
-    const Eigen::VectorXd z = cholesky->Solve(rhs);
-    out.gradient -= potential.RestShapeAdjoint(state, z, e);
+    out.gradient -= potential.RestShapeAdjoint(state, adjoint.z, e);
   }
   out.ok = true;
   out.message = "ok";

@@ -18,16 +18,20 @@ namespace ergo {
 
 struct RestShapeGradient {
   bool ok = false;
-  std::string message;  // why not ok (K̂ not positive definite), or "ok"
-  Vertices gradient;    // dζ/dX per foam vertex (#V_support x 3), Pa^e·m²/m
+  std::string message;      // why not ok (K̂ not positive definite), or "ok"
+  Vertices gradient;        // dζ/dX per foam vertex (#V_support x 3), Pa^e·m²/m
+  long pcg_iterations = 0;  // the adjoint solve's work (SolveAdjoint), on failure too
+  long factorizations = 0;
 };
 
 // `e`: the evaluation at `state` with the exact K̂ (TotalPotential::Evaluate with
 // HessianKind::kExact and the contact Hessians); `score`: ζ of its contacts' pressures with
 // its partials (ScorePressures with_partials; which halves ζ holds is the score's).
-// `cholesky` is (re)analysed as needed.
+// The adjoint is solved by SolveAdjoint (adjoint_solve.h) with `newton_factor` and `cholesky`.
 RestShapeGradient SoftSupportRestGradient(const TotalPotential& potential, const BodyState& state,
                                           const TotalPotential::Evaluation& e,
-                                          const PressureScore& score, SparseCholesky* cholesky);
+                                          const PressureScore& score,
+                                          const SparseCholesky& newton_factor,
+                                          SparseCholesky* cholesky);
 
 }  // namespace ergo

@@ -2,8 +2,8 @@
 
 #include <glog/logging.h>
 
+#include "ergo/design/adjoint_solve.h"
 #include "ergo/ergonomics/score_gradient.h"
-#include "ergo/mesh/preconditioned_cg.h"
 
 namespace ergo {
 
@@ -19,26 +19,15 @@ RigidShapeGradient RigidSupportShapeGradient(
   const Eigen::VectorXd rhs =
       potential.system().ReduceVertexGradient(state, e.positions, score.partials.body);
   if (rhs.squaredNorm() > 0) {
-    Eigen::VectorXd z;
-    if (newton_factor.factorized()) {
-      const PcgResult cg =
-          PreconditionedConjugateGradient(e.hessian(), newton_factor, rhs, 1e-12, 30);
-      out.pcg_iterations += cg.iterations;
-      if (cg.converged) z = cg.x;
-    }
-    if (z.size() == 0) {
-      const FactorizationStatus factor = cholesky->Factorize(e.hessian());
-      ++out.factorizations;
-      if (!factor.ok) {
-        out.message = "the exact Hessian at the equilibrium is not positive definite (" +
-                      factor.message +
-                      "): the equilibrium is not a strict minimum, so dy/dx is undefined";
-        return out;
-      }
-      z = cholesky->Solve(rhs);
+    const AdjointSolution adjoint = SolveAdjoint(e.hessian(), rhs, newton_factor, cholesky);
+    out.pcg_iterations = adjoint.pcg_iterations;
+    out.factorizations = adjoint.factorizations;
+    if (!adjoint.ok) {
+      out.message = adjoint.message;
+      return out;
     }
     const Vertices velocity =
-        potential.system().layout().VertexVelocity(potential.body(), state, e.positions, z);
+        potential.system().layout().VertexVelocity(potential.body(), state, e.positions, adjoint.z);
     const SupportShapeGradient contraction = ResidualShapeContraction(
         pressures.contacts, potential.body(), pressures.support_areas, velocity);
     shape.position -= contraction.position;

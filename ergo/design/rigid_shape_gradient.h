@@ -28,9 +28,8 @@ struct RigidShapeGradient {
 // `e`: the evaluation at `state` with the exact K̂ and the contact Hessians; `pressures`: the
 // score's pressures of e's contacts; `score`: ζ with its partials (has_partials); `support`:
 // the support surface at the design (the shape `pressures.support_areas` were taken on).
-// The adjoint is first solved by PCG preconditioned by `newton_factor` (Newton's factor of K̂
-// at its last iterate, next to y*) where that is factorised, else by factorising K̂ into
-// `cholesky`, which must have been analysed on K̂'s pattern.
+// The adjoint is solved by SolveAdjoint (adjoint_solve.h) with `newton_factor` and
+// `cholesky`.
 RigidShapeGradient RigidSupportShapeGradient(
     const TotalPotential& potential, const BodyState& state, const TotalPotential::Evaluation& e,
     const ContactPressures& pressures, const PressureScore& score, const TriMesh& support,

@@ -122,9 +122,11 @@ TEST_F(SoftRestShape, ScoreGradientMatchesFiniteDifferencesThroughTheEquilibrium
       part);
   const ContactPressures pressures =
       evaluator_->Evaluate(e.contacts, BarycentricVertexAreas(part->boundary().surface));
-  SparseCholesky cholesky;
-  const RestShapeGradient gradient = SoftSupportRestGradient(
-      potential, at.state, e, ScorePressures(pressures, *body_, true, true), &cholesky);
+  SparseCholesky cholesky, no_newton_factor;  // the factorising path of SolveAdjoint
+  const RestShapeGradient gradient =
+      SoftSupportRestGradient(potential, at.state, e, ScorePressures(pressures, *body_, true, true),
+                              no_newton_factor, &cholesky);
+  EXPECT_EQ(gradient.factorizations, 1);
   ASSERT_TRUE(gradient.ok) << gradient.message;
   const Vertices design_gradient = extension_->PullBack(gradient.gradient);
   ASSERT_GT(design_gradient.norm(), 0);

@@ -92,6 +92,11 @@ void CheckSoftSupportFlags() {
                      "e.g. 0.3 for a foam");
   }
   RequireInRange("support_density", FLAGS_support_density, 0, 1e4, "kg/m³, e.g. 50, or 0");
+  if (!FLAGS_support_held.empty() && FLAGS_support_tets.empty()) {
+    // A surface meshed here has its bottom plane held; its vertex numbers are not the user's.
+    throw InputError("--support_held", "", "lists vertices of a tet mesh, but no --support_tets",
+                     "give the tet mesh with --support_tets, or drop --support_held");
+  }
   RequireInRange("soft_support_edge_length", FLAGS_soft_support_edge_length, 1e-4, 1.0,
                  "metres, e.g. 0.01");
   RequireInRange("soft_support_base_edge_length", FLAGS_soft_support_base_edge_length,
