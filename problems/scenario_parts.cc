@@ -208,9 +208,8 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
     builder.edge_length = edge_length;
     if (fields.priors) builder.core_limit = fields.priors->core_limit;
     const BuiltLayer built = BuildLayerFromSurface(skin, depth, builder, input.skin_surface);
-    TissueMaterial material;
-    material.youngs_modulus = InterpolateOntoTets(built, stiffness);
-    material.poisson_ratio = Eigen::VectorXd::Constant(built.mesh.tets.rows(), input.poisson_ratio);
+    const TissueMaterial material =
+        TissueMaterialOnLayer(built, stiffness, fields.stiffening_exponent, input.poisson_ratio);
     LayeredBodyOptions options = load;
     SetTotalMass(input.total_mass, built.report.layer_volume, input.skin_surface, &options);
     body = std::make_shared<LayeredBody>(

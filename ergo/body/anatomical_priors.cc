@@ -15,6 +15,7 @@ namespace {
 // The prior's value at one skin point.
 struct TissuePrior {
   double depth = 0, youngs_modulus = 0;  // m, Pa
+  double stiffening_exponent = 2;        // α (2: neo-Hookean)
 };
 
 double Clamp01(double t) { return std::min(1.0, std::max(0.0, t)); }
@@ -28,7 +29,8 @@ double SmoothStep(double a, double b, double t) {
 double Mix(double a, double b, double weight) { return a + weight * (b - a); }
 
 TissuePrior Mix(const TissuePrior& a, const TissuePrior& b, double weight) {
-  return {Mix(a.depth, b.depth, weight), Mix(a.youngs_modulus, b.youngs_modulus, weight)};
+  return {Mix(a.depth, b.depth, weight), Mix(a.youngs_modulus, b.youngs_modulus, weight),
+          Mix(a.stiffening_exponent, b.stiffening_exponent, weight)};
 }
 
 // The part's length axis (z) and its start: `start_at_min` says whether the part starts
@@ -110,6 +112,11 @@ constexpr double kHeelModulus = 45e3, kBallModulus = 58e3, kToeModulus = 40e3,
 // (abductor digiti minimi, flexor digitorum brevis, abductor hallucis) and loose fat, like
 // the paper's seated tissue (5–15 kPa, §3.1): its upper end.
 constexpr double kMidfootModulus = 15e3;  // Pa
+// The heel pad's chambered fat stiffens steeply with strain: an Ogden fit to in-vivo
+// indentation gives alpha = 6.82 (Erdemir et al. 2006, J Biomech 39:1279) with a small-strain
+// shear modulus near Sun et al.'s; the ball's pad, built the same way, takes the same alpha.
+// Neo-Hookean (alpha = 2) elsewhere: no plantar fit behind a value there.
+constexpr double kFatPadExponent = 6.82;
 
 struct FootModel {
   LengthFrame frame;
@@ -138,15 +145,19 @@ struct FootModel {
     double bone = Mix(kHeelPadDepth, midfoot_bone, SmoothStep(0.2, 0.32, s));
     bone = Mix(bone, kBallPadDepth, SmoothStep(ball_s - 0.12, ball_s - 0.05, s));
     const double plantar_depth = std::max(bone - height, kDorsalFootDepth);
-    double plantar_modulus = Mix(kHeelModulus, kMidfootModulus, SmoothStep(0.2, 0.32, s));
-    plantar_modulus =
-        Mix(plantar_modulus, kBallModulus, SmoothStep(ball_s - 0.12, ball_s - 0.05, s));
-    const TissuePrior plantar{plantar_depth, plantar_modulus};
-    const TissuePrior dorsal{kDorsalFootDepth, kDorsalFootModulus};
+    const double to_midfoot = SmoothStep(0.2, 0.32, s),
+                 to_ball = SmoothStep(ball_s - 0.12, ball_s - 0.05, s);
+    const double plantar_modulus =
+        Mix(Mix(kHeelModulus, kMidfootModulus, to_midfoot), kBallModulus, to_ball);
+    const double plantar_exponent =
+        Mix(Mix(kFatPadExponent, 2.0, to_midfoot), kFatPadExponent, to_ball);
+    const TissuePrior plantar{plantar_depth, plantar_modulus, plantar_exponent};
+    const TissuePrior dorsal{kDorsalFootDepth, kDorsalFootModulus, 2.0};
     // Downward-facing skin is plantar; the sides and the top are dorsal.
     TissuePrior foot = Mix(dorsal, plantar, SmoothStep(0.1, 0.6, -normal.y()));
-    foot.youngs_modulus =
-        Mix(foot.youngs_modulus, kToeModulus, SmoothStep(ball_s + 0.03, ball_s + kToeCrease, s));
+    const double to_toes = SmoothStep(ball_s + 0.03, ball_s + kToeCrease, s);
+    foot.youngs_modulus = Mix(foot.youngs_modulus, kToeModulus, to_toes);
+    foot.stiffening_exponent = Mix(foot.stiffening_exponent, 2.0, to_toes);
     return foot;
   }
 
@@ -234,6 +245,7 @@ FootModel DetectFoot(const Vertices& v, const Vertices& normals, const AnatomyOp
     const TissuePrior prior = foot.At(mark.point, normals.row(index).transpose());
     mark.depth = prior.depth;
     mark.youngs_modulus = prior.youngs_modulus;
+    mark.stiffening_exponent = prior.stiffening_exponent;
     landmarks->push_back(mark);
   }
   return foot;
@@ -295,6 +307,7 @@ SeatModel DetectSeat(const Vertices& v, const Vertices& normals, const std::stri
     const TissuePrior prior = seat.At(mark.point, normals.row(lowest[side]).transpose());
     mark.depth = prior.depth;
     mark.youngs_modulus = prior.youngs_modulus;
+    mark.stiffening_exponent = prior.stiffening_exponent;
     landmarks->push_back(mark);
   }
   return seat;
@@ -351,6 +364,7 @@ HandModel DetectHand(const Vertices& v, const Vertices& normals, const std::stri
     const TissuePrior prior = hand.At(mark.point, normals.row(index).transpose());
     mark.depth = prior.depth;
     mark.youngs_modulus = prior.youngs_modulus;
+    mark.stiffening_exponent = prior.stiffening_exponent;
     landmarks->push_back(mark);
   }
   return hand;
@@ -479,6 +493,8 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
   for (const Landmark& mark : priors.landmarks) {
     summary << "; " << mark.name << " depth " << 1e3 * mark.depth << " mm, E "
             << 1e-3 * mark.youngs_modulus << " kPa";
+    if (mark.stiffening_exponent != 2.0)
+      summary << " (stiffening, alpha " << mark.stiffening_exponent << ")";
   }
   // Farthest-point samples, plus the landmarks themselves (where the priors are defined).
   std::vector<Eigen::Index> chosen = FarthestPoints(v, options.samples);
@@ -488,7 +504,8 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
     if (std::find(chosen.begin(), chosen.end(), index) == chosen.end()) chosen.push_back(index);
   }
   const Eigen::Index count = static_cast<Eigen::Index>(chosen.size());
-  for (PointSamples* samples : {&priors.depth, &priors.youngs_modulus}) {
+  for (PointSamples* samples :
+       {&priors.depth, &priors.youngs_modulus, &priors.stiffening_exponent}) {
     samples->points.resize(count, 3);
     samples->values.resize(count);
     samples->source = std::string(AnatomyName(options.anatomy)) + " priors";
@@ -502,6 +519,8 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
     priors.depth.values[k] = value.depth;
     priors.youngs_modulus.points.row(k) = v.row(i);
     priors.youngs_modulus.values[k] = value.youngs_modulus;
+    priors.stiffening_exponent.points.row(k) = v.row(i);
+    priors.stiffening_exponent.values[k] = value.stiffening_exponent;
   }
   if (raised) summary << "; depths below " << 1e3 * floor << " mm raised to it (one edge length)";
   priors.summary = summary.str();

@@ -54,11 +54,14 @@ struct Landmark {
   std::string name;  // "heel", "ball", "medial arch", "toe tip", "ischial tuberosity (left)", ...
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // on the skin, m
   double depth = 0, youngs_modulus = 0;             // the prior there, m and Pa
+  double stiffening_exponent = 2;                   // α there (2: neo-Hookean)
 };
 
 struct AnatomicalPriors {
   PointSamples depth;           // x,y,z,depth (m) on the skin
   PointSamples youngs_modulus;  // x,y,z,E (Pa) on the skin
+  // x,y,z,α on the skin: the tissue's stiffening exponent (TissueMaterial), 2 where neo-Hookean.
+  PointSamples stiffening_exponent;
   std::vector<Landmark> landmarks;
   // The part's extent along its length (foot: heel to toe tip; seat: back to knees; hand:
   // wrist to fingertips), m, and where it starts: the z of the heel / back / wrist end and

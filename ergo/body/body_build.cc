@@ -130,7 +130,7 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   Json source = Json::object();
   BuiltLayer built;
   std::ostringstream report;
-  std::optional<SampleInterpolant> stiffness;
+  std::optional<SampleInterpolant> stiffness, stiffening_exponent;
   if (!body.surface.empty()) {
     TissueFieldInputs inputs;
     inputs.anatomy = body.anatomy;
@@ -148,6 +148,7 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
     ApplyAxisMap(inputs.axes, &skin.vertices);
     TissueFields fields = MakeTissueFields(skin, inputs, body.surface);
     stiffness = fields.youngs_modulus;
+    stiffening_exponent = fields.stiffening_exponent;
     source["mode"] = "surface";
     source["surface"] = body.surface;
     source["unit"] = body.unit == LengthUnit::kMillimetre ? "mm" : "m";
@@ -164,6 +165,7 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
         entry["point_m"] = Json::array({mark.point.x(), mark.point.y(), mark.point.z()});
         entry["depth_m"] = mark.depth;
         entry["youngs_modulus_pa"] = mark.youngs_modulus;
+        entry["stiffening_exponent"] = mark.stiffening_exponent;
         landmarks.push_back(entry);
       }
       source["landmarks"] = landmarks;
@@ -191,9 +193,8 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   BodyRecord& record = result.record;
   record.rest = built.mesh;
   record.attached = built.attached;
-  record.material.youngs_modulus = InterpolateOntoTets(built, *stiffness);
-  record.material.poisson_ratio =
-      Eigen::VectorXd::Constant(built.mesh.tets.rows(), body.poisson_ratio);
+  record.material =
+      TissueMaterialOnLayer(built, *stiffness, stiffening_exponent, body.poisson_ratio);
   record.material.compression_resistance = body.compression_resistance;
   record.material.inversion_threshold = body.inversion_threshold;
   record.tissue_density = body.density;
@@ -217,6 +218,10 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   summary["mass_kg"] = layered.total_mass();
   summary["youngs_modulus_min_pa"] = record.material.youngs_modulus.minCoeff();
   summary["youngs_modulus_max_pa"] = record.material.youngs_modulus.maxCoeff();
+  if (record.material.stiffening_exponent.size() != 0) {
+    summary["stiffening_exponent_min"] = record.material.stiffening_exponent.minCoeff();
+    summary["stiffening_exponent_max"] = record.material.stiffening_exponent.maxCoeff();
+  }
   record.summary = summary;
   record.source = source;
 
@@ -228,6 +233,10 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
   report << "Young's modulus: " << record.material.youngs_modulus.minCoeff() << " - "
          << record.material.youngs_modulus.maxCoeff() << " Pa; Poisson's ratio "
          << body.poisson_ratio << "\n";
+  if (record.material.stiffening_exponent.size() != 0) {
+    report << "stiffening exponent: " << record.material.stiffening_exponent.minCoeff() << " - "
+           << record.material.stiffening_exponent.maxCoeff() << " (2: neo-Hookean)\n";
+  }
   result.report = report.str();
   return result;
 }

@@ -74,6 +74,7 @@ void ReadMaterial(const std::string& path, Eigen::Index tet_count, TissueMateria
   std::string_view line;
   Eigen::Index row = 0;
   bool header = false;
+  size_t columns = 2;  // a third column, stiffening_exponent, is optional (2: neo-Hookean)
   while (reader.NextLine(&line)) {
     std::vector<std::string_view> fields;
     size_t start = 0;
@@ -92,12 +93,18 @@ void ReadMaterial(const std::string& path, Eigen::Index tet_count, TissueMateria
     if (!fields.empty() && !fields[0].empty() && fields[0][0] == '#') continue;
     if (!header) {
       header = true;
-      if (fields.size() != 2 || fields[0] != "youngs_modulus_pa" || fields[1] != "poisson_ratio") {
-        reader.Fail("expected the header youngs_modulus_pa,poisson_ratio", kRegenerate);
+      columns = fields.size();
+      if ((columns != 2 && columns != 3) || fields[0] != "youngs_modulus_pa" ||
+          fields[1] != "poisson_ratio" || (columns == 3 && fields[2] != "stiffening_exponent")) {
+        reader.Fail("expected the header youngs_modulus_pa,poisson_ratio[,stiffening_exponent]",
+                    kRegenerate);
       }
+      if (columns == 3) material->stiffening_exponent.resize(tet_count);
       continue;
     }
-    if (fields.size() != 2) reader.Fail("expected 2 comma-separated values", kRegenerate);
+    if (fields.size() != columns) {
+      reader.Fail("expected " + std::to_string(columns) + " comma-separated values", kRegenerate);
+    }
     if (row >= tet_count) {
       reader.Fail("more rows than the mesh's " + std::to_string(tet_count) + " tets", kRegenerate);
     }
@@ -108,6 +115,14 @@ void ReadMaterial(const std::string& path, Eigen::Index tet_count, TissueMateria
     if (!ParseDouble(fields[1], &nu) || !(nu > -1 && nu < 0.5)) {
       reader.Fail("Poisson's ratio " + Quote(fields[1]) + " is not a number in (-1, 0.5)",
                   kRegenerate);
+    }
+    if (columns == 3) {
+      double alpha = 0;
+      if (!ParseDouble(fields[2], &alpha) || !(alpha >= 2 && alpha <= 30)) {
+        reader.Fail("stiffening exponent " + Quote(fields[2]) + " is not a number in [2, 30]",
+                    kRegenerate);
+      }
+      material->stiffening_exponent[row] = alpha;
     }
     material->youngs_modulus[row] = E;
     material->poisson_ratio[row] = nu;
@@ -162,11 +177,16 @@ void SaveBodyDirectory(const std::string& dir, const BodyRecord& body, VtuEncodi
   });
 
   WriteFileAtomically(PathIn(dir, kBodyMaterialFile), [&](std::ostream& out) {
-    out << "youngs_modulus_pa,poisson_ratio\n";
+    const bool stiffening = body.material.stiffening_exponent.size() != 0;
+    out << "youngs_modulus_pa,poisson_ratio" << (stiffening ? ",stiffening_exponent" : "") << '\n';
     for (Eigen::Index t = 0; t < tets; ++t) {
       WriteDouble(out, body.material.youngs_modulus[t]);
       out << ',';
       WriteDouble(out, body.material.poisson_ratio[t]);
+      if (stiffening) {
+        out << ',';
+        WriteDouble(out, body.material.stiffening_exponent[t]);
+      }
       out << '\n';
     }
   });
@@ -178,6 +198,8 @@ void SaveBodyDirectory(const std::string& dir, const BodyRecord& body, VtuEncodi
   if (body.vertex_depth.size() == n) fields.point_scalars.push_back({"depth_m", body.vertex_depth});
   fields.cell_scalars.push_back({"youngs_modulus_Pa", body.material.youngs_modulus});
   fields.cell_scalars.push_back({"poisson_ratio", body.material.poisson_ratio});
+  if (body.material.stiffening_exponent.size() != 0)
+    fields.cell_scalars.push_back({"stiffening_exponent", body.material.stiffening_exponent});
   WriteVtu(PathIn(dir, kBodyViewFile), body.rest, fields, view_encoding);
 
   Json json = Json::object();

@@ -114,6 +114,10 @@ ElasticPart ElasticPart::Join(const std::vector<const ElasticPart*>& parts,
   TissueMaterial material = first.material_;
   material.youngs_modulus.resize(tets);
   material.poisson_ratio.resize(tets);
+  bool stiffening = false;
+  for (const ElasticPart* part : parts)
+    stiffening |= part->material_.stiffening_exponent.size() != 0;
+  material.stiffening_exponent.resize(stiffening ? tets : 0);
   Eigen::Index v0 = 0, t0 = 0;
   for (size_t p = 0; p < parts.size(); ++p) {
     const ElasticPart& part = *parts[p];
@@ -130,6 +134,8 @@ ElasticPart ElasticPart::Join(const std::vector<const ElasticPart*>& parts,
     mesh.tets.middleRows(t0, nt) = part.rest_.tets.array() + static_cast<int>(v0);
     material.youngs_modulus.segment(t0, nt) = part.material_.youngs_modulus;
     material.poisson_ratio.segment(t0, nt) = part.material_.poisson_ratio;
+    for (Eigen::Index t = 0; stiffening && t < nt; ++t)
+      material.stiffening_exponent[t0 + t] = StiffeningExponentOf(part.material_, t);
     held.insert(held.end(), part.held_.begin(), part.held_.end());
     v0 += nv;
     t0 += nt;

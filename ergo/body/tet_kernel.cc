@@ -18,6 +18,7 @@ TetKernel::TetKernel(const TetMesh& mesh, const TissueMaterial& tissue) {
     parameters.poisson_ratio = tissue.poisson_ratio[t];
     parameters.compression_resistance = tissue.compression_resistance;
     parameters.inversion_threshold = tissue.inversion_threshold;
+    parameters.stiffening_exponent = StiffeningExponentOf(tissue, t);
     materials_.emplace_back(parameters);
   }
 }

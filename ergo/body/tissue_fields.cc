@@ -73,7 +73,22 @@ TissueFields MakeTissueFields(const TriMesh& skin, const TissueFieldInputs& inpu
       FieldOf(inputs.youngs_modulus, inputs.stiffness_samples,
               priors ? &priors->youngs_modulus : nullptr, inputs, false, inputs.modulus_flag,
               inputs.modulus_samples_flag, "E", "Pa", "10000", &fields.modulus_description);
+  if (priors != nullptr && priors->stiffening_exponent.values.size() != 0 &&
+      priors->stiffening_exponent.values.maxCoeff() > 2.0) {
+    fields.stiffening_exponent = SampleInterpolant::Fit(priors->stiffening_exponent);
+  }
   return fields;
+}
+
+TissueMaterial TissueMaterialOnLayer(const BuiltLayer& layer, const SampleInterpolant& stiffness,
+                                     const std::optional<SampleInterpolant>& stiffening_exponent,
+                                     double poisson_ratio) {
+  TissueMaterial material;
+  material.youngs_modulus = InterpolateOntoTets(layer, stiffness);
+  material.poisson_ratio = Eigen::VectorXd::Constant(layer.mesh.tets.rows(), poisson_ratio);
+  if (stiffening_exponent)
+    material.stiffening_exponent = InterpolateOntoTets(layer, *stiffening_exponent);
+  return material;
 }
 
 }  // namespace ergo

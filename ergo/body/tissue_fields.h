@@ -11,7 +11,9 @@
 #include <Eigen/Core>
 
 #include "ergo/body/anatomical_priors.h"
+#include "ergo/body/layer_builder.h"
 #include "ergo/body/sample_interpolation.h"
+#include "ergo/body/tissue_material.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/tri_mesh.h"
 
@@ -33,6 +35,10 @@ struct TissueFieldInputs {
 
 struct TissueFields {
   SampleInterpolant depth, youngs_modulus;
+  // The tissue's stiffening exponent α (TissueMaterial) where the priors set one other than
+  // 2 (the foot's fat pads); empty: neo-Hookean everywhere. Measured moduli keep it (the
+  // indentation fit gives E, the small-strain modulus; α is the curve's shape).
+  std::optional<SampleInterpolant> stiffening_exponent;
   std::optional<AnatomicalPriors> priors;              // when an anatomy was given
   std::string depth_description, modulus_description;  // for reports
 };
@@ -43,5 +49,11 @@ struct TissueFields {
 // naming the flag or the file.
 TissueFields MakeTissueFields(const TriMesh& skin, const TissueFieldInputs& inputs,
                               const std::string& source);
+
+// The per-tet material of a layer built over the skin: E and α (when given) from the field
+// at each tet's nearest skin point, ν constant.
+TissueMaterial TissueMaterialOnLayer(const BuiltLayer& layer, const SampleInterpolant& stiffness,
+                                     const std::optional<SampleInterpolant>& stiffening_exponent,
+                                     double poisson_ratio);
 
 }  // namespace ergo

@@ -15,6 +15,10 @@ double TetVolume(const TetMesh& mesh, Eigen::Index t) {
   return e1.dot(e2.cross(e3)) / 6.0;
 }
 
+double StiffeningExponentOf(const TissueMaterial& material, Eigen::Index t) {
+  return material.stiffening_exponent.size() == 0 ? 2.0 : material.stiffening_exponent[t];
+}
+
 TissueMaterial UniformMaterial(Eigen::Index tet_count, double youngs_modulus,
                                double poisson_ratio) {
   TissueMaterial material;
@@ -34,6 +38,13 @@ void ValidateTetMaterial(const TetMesh& rest, const TissueMaterial& material,
         "material arrays do not have one value per tet (" + std::to_string(tet_count) + " tets)",
         "give Young's modulus and Poisson's ratio per tet");
   }
+  if (material.stiffening_exponent.size() != 0 &&
+      material.stiffening_exponent.size() != tet_count) {
+    throw InputError(
+        name, "",
+        "the stiffening exponents are not one per tet (" + std::to_string(tet_count) + " tets)",
+        "give one per tet, or none for neo-Hookean tissue");
+  }
   for (Eigen::Index t = 0; t < tet_count; ++t) {
     for (int k = 0; k < 4; ++k) {
       if (rest.tets(t, k) < 0 || rest.tets(t, k) >= n) {
@@ -51,6 +62,12 @@ void ValidateTetMaterial(const TetMesh& rest, const TissueMaterial& material,
       throw InputError(name, "tet " + std::to_string(t),
                        "Poisson's ratio " + std::to_string(nu) + " is outside (-1, 0.5)",
                        "use a value below 0.5, such as 0.45 for nearly incompressible tissue");
+    }
+    const double alpha = StiffeningExponentOf(material, t);
+    if (!(alpha >= 2.0 && alpha <= 30.0)) {
+      throw InputError(name, "tet " + std::to_string(t),
+                       "stiffening exponent " + std::to_string(alpha) + " is outside [2, 30]",
+                       "use 2 for neo-Hookean tissue, about 7 for the heel's fat pad");
     }
     if (!(TetVolume(rest, t) > 0)) {
       throw InputError(name, "tet " + std::to_string(t),

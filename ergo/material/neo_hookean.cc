@@ -24,16 +24,28 @@ constexpr int kPairSecond[3] = {1, 2, 2};
 constexpr double kJacobiTolerance = 1e-16;
 constexpr int kMaxJacobiSweeps = 4;
 
+// The constants of psi_hat (README eqs. 1, 1a, 2).
+struct Coefficients {
+  double stretch = 0;  // 2 mu / alpha^2
+  double log = 0;      // 2 mu / alpha
+  double lambda = 0;
+  double compression = 0;  // k
+  double alpha = 2;
+  double epsilon = 0.1;
+};
+
 // Everything about psi_hat(sigma) that P and dP/dF need (README eqs. 3-7).
 struct PrincipalState {
   Eigen::Vector3d sigma;
-  Eigen::Vector3d log_slope;      // l'(sigma_i)
-  Eigen::Vector3d log_curvature;  // l''(sigma_i)
+  Eigen::Vector3d stretch_slope;      // d/dsigma_i of the stretch term, Pa
+  Eigen::Vector3d stretch_curvature;  // d2/dsigma_i^2 of the stretch term, Pa
+  Eigen::Vector3d log_slope;          // l'(sigma_i)
+  Eigen::Vector3d log_curvature;      // l''(sigma_i)
   bool all_above_threshold = true;
   double log_volume = 0;      // L = sum_i l(sigma_i)
   double volume = 1;          // J~ = exp(L)
   double energy = 0;          // psi_hat
-  double coupling = 0;        // G = lambda L - mu + J~ psi_c'(J~)
+  double coupling = 0;        // G = lambda L - 2 mu / alpha + J~ psi_c'(J~)
   double coupling_slope = 0;  // dG/dL = lambda + J~ psi_c' + J~^2 psi_c''
 };
 
@@ -102,6 +114,8 @@ NeoHookean::NeoHookean(const NeoHookeanParameters& parameters) : parameters_(par
   CHECK_GE(parameters.compression_resistance, 0.0);
   CHECK(parameters.inversion_threshold > 0.0 && parameters.inversion_threshold < 1.0)
       << "inversion threshold must be in (0, 1), got " << parameters.inversion_threshold;
+  CHECK(parameters.stiffening_exponent >= 2.0 && parameters.stiffening_exponent <= 30.0)
+      << "stiffening exponent must be in [2, 30], got " << parameters.stiffening_exponent;
   mu_ = lame.mu;
   lambda_ = lame.lambda;
   compression_stiffness_ = parameters.compression_resistance * parameters.youngs_modulus /
@@ -110,11 +124,78 @@ NeoHookean::NeoHookean(const NeoHookeanParameters& parameters) : parameters_(par
 
 namespace {
 
+Coefficients CoefficientsOf(const NeoHookean& material) {
+  Coefficients c;
+  c.alpha = material.parameters().stiffening_exponent;
+  c.stretch = 2.0 * material.mu() / (c.alpha * c.alpha);
+  c.log = 2.0 * material.mu() / c.alpha;
+  c.lambda = material.lambda();
+  c.compression = material.compression_stiffness();
+  c.epsilon = material.parameters().inversion_threshold;
+  return c;
+}
+
+// w(sigma) = sigma^alpha and its first two derivatives, continued below epsilon by its
+// quadratic Taylor polynomial (README eq. 4a) so that inverted stretches stay finite and
+// C^2; alpha = 2 is sigma^2 itself (its Taylor polynomial), evaluated directly.
+void StretchPower(double sigma, double alpha, double epsilon, double* w, double* slope,
+                  double* curvature) {
+  if (alpha == 2.0) {
+    *w = sigma * sigma;
+    *slope = 2.0 * sigma;
+    *curvature = 2.0;
+    return;
+  }
+  const double base = sigma >= epsilon ? sigma : epsilon;
+  const double power = std::pow(base, alpha - 2.0);  // base^(alpha-2)
+  const double w0 = power * base * base, w1 = alpha * power * base,
+               w2 = alpha * (alpha - 1.0) * power;
+  if (sigma >= epsilon) {
+    *w = w0;
+    *slope = w1;
+    *curvature = w2;
+    return;
+  }
+  const double d = sigma - epsilon;
+  *w = w0 + w1 * d + 0.5 * w2 * d * d;
+  *slope = w1 + w2 * d;
+  *curvature = w2;
+}
+
+// (w'(a) - w'(b)) / (a - b) without cancellation for a ~ b (README eq. 8a).
+double StretchSlopeDividedDifference(double a, double b, double alpha, double epsilon) {
+  if (alpha == 2.0) return 2.0;
+  const double curvature_at_threshold = alpha * (alpha - 1.0) * std::pow(epsilon, alpha - 2.0);
+  // Above epsilon: alpha (a^p - b^p) / (a - b), p = alpha - 1, as
+  // alpha a^(p-1) expm1(p t) / expm1(t) with t = ln(b / a).
+  const auto above = [alpha](double x, double y) {
+    const double t = std::log1p((y - x) / x);
+    const double p = alpha - 1.0;
+    if (t == 0.0) return alpha * p * std::pow(x, p - 1.0);
+    return alpha * std::pow(x, p - 1.0) * std::expm1(p * t) / std::expm1(t);
+  };
+  const bool a_above = a >= epsilon, b_above = b >= epsilon;
+  if (a_above && b_above) return above(a, b);
+  if (!a_above && !b_above) return curvature_at_threshold;
+  if (!a_above) std::swap(a, b);  // now a >= epsilon > b
+  // A weighted mean of the two pieces' slopes, as in LogSlopeDividedDifference.
+  const double upper = a - epsilon, lower = epsilon - b;
+  return (upper * above(a, epsilon) + lower * curvature_at_threshold) / (upper + lower);
+}
+
 // The principal-space state of psi_hat at sigma (README eqs. 3-6).
-PrincipalState EvaluatePrincipal(const Eigen::Vector3d& sigma, double mu, double lambda, double k,
-                                 double epsilon) {
+PrincipalState EvaluatePrincipal(const Eigen::Vector3d& sigma, const Coefficients& c) {
+  const double lambda = c.lambda, k = c.compression, epsilon = c.epsilon;
   PrincipalState s;
   s.sigma = sigma;
+  double stretch_energy = 0;
+  for (int i = 0; i < 3; ++i) {
+    double w = 0;
+    StretchPower(sigma(i), c.alpha, epsilon, &w, &s.stretch_slope(i), &s.stretch_curvature(i));
+    stretch_energy += w - 1.0;
+  }
+  s.stretch_slope *= c.stretch;
+  s.stretch_curvature *= c.stretch;
   for (int i = 0; i < 3; ++i) s.all_above_threshold &= sigma(i) >= epsilon;
   if (s.all_above_threshold) {
     // Common case: l = ln, one log instead of three logs and an exp.
@@ -149,8 +230,8 @@ PrincipalState EvaluatePrincipal(const Eigen::Vector3d& sigma, double mu, double
     dpsi_c = -3.0 * k * m * m / kCompressionDenominator;
     d2psi_c = -6.0 * k * m / kCompressionDenominator;
   }
-  s.energy = 0.5 * mu * (sigma.squaredNorm() - 3.0) - mu * l + 0.5 * lambda * l * l + psi_c;
-  s.coupling = lambda * l - mu + j * dpsi_c;
+  s.energy = c.stretch * stretch_energy - c.log * l + 0.5 * lambda * l * l + psi_c;
+  s.coupling = lambda * l - c.log + j * dpsi_c;
   s.coupling_slope = lambda + j * dpsi_c + j * j * d2psi_c;
   return s;
 }
@@ -170,27 +251,33 @@ double LogSlopeDividedDifference(double a, double b, double epsilon) {
   return -(above / (a * epsilon) + below / (epsilon * epsilon)) / (above + below);
 }
 
-Eigen::Vector3d StressFromState(const PrincipalState& s, double mu) {
-  return mu * s.sigma + s.coupling * s.log_slope;
+Eigen::Vector3d StressFromState(const PrincipalState& s) {
+  return s.stretch_slope + s.coupling * s.log_slope;
 }
 
-PrincipalHessian HessianFromState(const PrincipalState& s, double mu, double epsilon,
+PrincipalHessian HessianFromState(const PrincipalState& s, const Coefficients& c,
                                   HessianKind kind) {
+  const double epsilon = c.epsilon;
   PrincipalHessian h;
-  // d2psi/dsigma_i dsigma_j = (mu + G l''_i) delta_ij + G_L l'_i l'_j (README eq. 6).
+  // d2psi/dsigma_i dsigma_j = (c_s w''_i + G l''_i) delta_ij + G_L l'_i l'_j (README eq. 6;
+  // neo-Hookean: c_s w'' = mu).
   h.stretch_block = s.coupling_slope * s.log_slope * s.log_slope.transpose();
-  h.stretch_block.diagonal() += (mu * Eigen::Vector3d::Ones() + s.coupling * s.log_curvature);
+  h.stretch_block.diagonal() += s.stretch_curvature + s.coupling * s.log_curvature;
   const double floor = kPairSumFloorOverThreshold * epsilon;
   for (int p = 0; p < 3; ++p) {
     const int i = kPairFirst[p];
     const int j = kPairSecond[p];
     h.difference_quotient(p) =
-        mu + s.coupling * LogSlopeDividedDifference(s.sigma(i), s.sigma(j), epsilon);
+        c.stretch * StretchSlopeDividedDifference(s.sigma(i), s.sigma(j), c.alpha, epsilon) +
+        s.coupling * LogSlopeDividedDifference(s.sigma(i), s.sigma(j), epsilon);
     double sum = s.sigma(i) + s.sigma(j);
     // Signed floor; |sum| < floor goes to +floor, the side the SVD ordering
     // sigma2 >= |sigma3| approaches from (README §5).
     if (sum < floor && sum > -floor) sum = floor;
-    h.sum_quotient(p) = mu + s.coupling * (s.log_slope(i) + s.log_slope(j)) / sum;
+    // Neo-Hookean: the stretch part (mu sigma_i + mu sigma_j) / (sigma_i + sigma_j) = mu exactly.
+    const double stretch_part =
+        c.alpha == 2.0 ? 2.0 * c.stretch : (s.stretch_slope(i) + s.stretch_slope(j)) / sum;
+    h.sum_quotient(p) = stretch_part + s.coupling * (s.log_slope(i) + s.log_slope(j)) / sum;
   }
   if (kind == HessianKind::kProjectedPsd) {
     h.stretch_block = ProjectToPsd(h.stretch_block);
@@ -207,18 +294,17 @@ void NeoHookean::EvaluatePrincipalFrame(const Eigen::Matrix3d& f, HessianKind ki
                                         SignedSvd3* svd,
                                         PrincipalHessian* principal_hessian) const {
   const SignedSvd3 decomposition = RotationVariantSvd(f);
-  const double epsilon = parameters_.inversion_threshold;
-  const PrincipalState s =
-      EvaluatePrincipal(decomposition.sigma, mu_, lambda_, compression_stiffness_, epsilon);
+  const Coefficients c = CoefficientsOf(*this);
+  const PrincipalState s = EvaluatePrincipal(decomposition.sigma, c);
   if (energy_density != nullptr) *energy_density = s.energy;
   if (first_piola != nullptr) {
     // P = U diag(dpsi/dsigma) V^T (README eq. 7).
     first_piola->noalias() =
-        decomposition.u * StressFromState(s, mu_).asDiagonal() * decomposition.v.transpose();
+        decomposition.u * StressFromState(s).asDiagonal() * decomposition.v.transpose();
   }
   if (svd != nullptr) *svd = decomposition;
   if (principal_hessian != nullptr) {
-    *principal_hessian = HessianFromState(s, mu_, epsilon, kind);
+    *principal_hessian = HessianFromState(s, c, kind);
   }
 }
 
@@ -253,22 +339,17 @@ Matrix9d NeoHookean::StressDerivative(const Eigen::Matrix3d& f, HessianKind kind
 }
 
 double NeoHookean::PrincipalEnergy(const Eigen::Vector3d& sigma) const {
-  return EvaluatePrincipal(sigma, mu_, lambda_, compression_stiffness_,
-                           parameters_.inversion_threshold)
-      .energy;
+  return EvaluatePrincipal(sigma, CoefficientsOf(*this)).energy;
 }
 
 Eigen::Vector3d NeoHookean::PrincipalStress(const Eigen::Vector3d& sigma) const {
-  return StressFromState(EvaluatePrincipal(sigma, mu_, lambda_, compression_stiffness_,
-                                           parameters_.inversion_threshold),
-                         mu_);
+  return StressFromState(EvaluatePrincipal(sigma, CoefficientsOf(*this)));
 }
 
 PrincipalHessian NeoHookean::PrincipalStressDerivative(const Eigen::Vector3d& sigma,
                                                        HessianKind kind) const {
-  const double epsilon = parameters_.inversion_threshold;
-  return HessianFromState(EvaluatePrincipal(sigma, mu_, lambda_, compression_stiffness_, epsilon),
-                          mu_, epsilon, kind);
+  const Coefficients c = CoefficientsOf(*this);
+  return HessianFromState(EvaluatePrincipal(sigma, c), c, kind);
 }
 
 }  // namespace ergo

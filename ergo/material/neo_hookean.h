@@ -25,6 +25,11 @@ struct NeoHookeanParameters {
   double compression_resistance = 1.0;
   // epsilon: principal stretches below it use the quadratic extension of ln; in (0, 1).
   double inversion_threshold = 0.1;
+  // alpha in the stretch term 2 mu / alpha^2 sum_i (sigma_i^alpha - 1) and the log term
+  // -(2 mu / alpha) ln J (README §1a): 2 is the neo-Hookean reference form; larger values
+  // stiffen the material as it stretches (a compressible one-term Ogden law; the heel pad
+  // fits alpha ~ 6.8, Erdemir et al. 2006) with the same small-strain E and nu; in [2, 30].
+  double stiffening_exponent = 2.0;
 };
 
 struct LameParameters {

@@ -72,6 +72,15 @@ TEST(Body, FootPriorsOnTheShippedScanAreInTheirDocumentedRanges) {
   const TissueFields fields = MakeTissueFields(skin, inputs, "scan");
   for (const Landmark* mark : {&heel, &ball, &arch})
     EXPECT_NEAR(fields.depth(mark->point), mark->depth, 1e-9) << mark->name;
+  // The fat pads stiffen (Erdemir et al. 2006's alpha), the arch's muscle does not.
+  EXPECT_EQ(heel.stiffening_exponent, 6.82);
+  EXPECT_NEAR(ball.stiffening_exponent, 6.82, 1e-9);
+  EXPECT_NEAR(arch.stiffening_exponent, 2.0, 0.5);
+  ASSERT_TRUE(fields.stiffening_exponent.has_value());
+  for (const Landmark* mark : {&heel, &ball, &arch}) {
+    EXPECT_NEAR((*fields.stiffening_exponent)(mark->point), mark->stiffening_exponent, 1e-9)
+        << mark->name;
+  }
 }
 
 // Given the other heel end or foot side, the frame follows the flags.

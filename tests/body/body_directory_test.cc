@@ -143,6 +143,29 @@ std::string LoadError(const std::string& dir, std::string* location = nullptr) {
   return "no error";
 }
 
+TEST(Body, BodyDirectoryKeepsStiffeningExponentsAndOmitsThemForNeoHookeanTissue) {
+  // Neo-Hookean bodies keep the two-column file older directories have; a stiffening one
+  // writes a third column and reads it back bit for bit, with its material law.
+  BodyRecord body = Body();
+  const std::string plain = testing::MakeScratchDir("body_neo");
+  SaveBodyDirectory(plain, body);
+  EXPECT_EQ(Slurp(plain + "/tet_material.csv").rfind("youngs_modulus_pa,poisson_ratio\n", 0), 0u);
+  EXPECT_EQ(ReadBodyDirectory(plain).material.stiffening_exponent.size(), 0);
+  const Eigen::Index tets = body.rest.tets.rows();
+  body.material.stiffening_exponent = Eigen::VectorXd::LinSpaced(tets, 2.0, 6.82 + 1.0 / 3.0);
+  const std::string dir = testing::MakeScratchDir("body_alpha");
+  SaveBodyDirectory(dir, body);
+  EXPECT_EQ(Slurp(dir + "/tet_material.csv")
+                .rfind("youngs_modulus_pa,poisson_ratio,stiffening_exponent\n", 0),
+            0u);
+  EXPECT_EQ(ReadBodyDirectory(dir).material.stiffening_exponent, body.material.stiffening_exponent);
+  std::string location;
+  Overwrite(dir + "/tet_material.csv",
+            "youngs_modulus_pa,poisson_ratio,stiffening_exponent\n1e4,0.45,1.5\n");
+  EXPECT_EQ(LoadError(dir, &location), "tet_material.csv");
+  EXPECT_EQ(location, "line 2");
+}
+
 TEST(Body, DamagedBodyDirectoriesAreRefusedNamingTheFile) {
   std::string location;
   {

@@ -65,6 +65,18 @@ TEST(Body, RefusesABodyWithoutAttachedVerticesOrWithBadMaterial) {
   attached[0] = true;
   material.poisson_ratio[3] = 0.5;
   EXPECT_THROW(LayeredBody::Create(mesh, attached, material, {}), InputError);
+  material.poisson_ratio[3] = 0.4;
+  material.stiffening_exponent = Eigen::VectorXd::Constant(5, 2.0);  // one short
+  EXPECT_THROW(LayeredBody::Create(mesh, attached, material, {}), InputError);
+  material.stiffening_exponent = Eigen::VectorXd::Constant(6, 6.82);
+  material.stiffening_exponent[4] = 1.0;  // softening is outside the law's range
+  try {
+    LayeredBody::Create(mesh, attached, material, {}, "test body");
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.location(), "tet 4");
+    EXPECT_NE(error.problem().find("stiffening exponent"), std::string::npos);
+  }
 }
 
 TEST(Body, CoreLockParsesNamesAndRefusesASingleLockedRotation) {

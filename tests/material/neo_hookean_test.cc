@@ -34,9 +34,16 @@ constexpr int kSamplesPerRegime = 12;
 constexpr int kRandomDirections = 6;
 
 // Materials the derivative tests run with: tissue-like, nearly incompressible without
-// compression term, and one with a compression term large enough to dominate psi_c'.
+// compression term, one with a compression term large enough to dominate psi_c', and two
+// stiffening ones (alpha = 6.82, the heel pad's Ogden exponent; alpha = 3.5 with a larger
+// threshold, so that the sigma^alpha extension below it is exercised).
 std::vector<NeoHookeanParameters> TestMaterials() {
-  std::vector<NeoHookeanParameters> materials(4);
+  std::vector<NeoHookeanParameters> materials(6);
+  materials[4].youngs_modulus = 4.5e4;
+  materials[4].stiffening_exponent = 6.82;
+  materials[5].poisson_ratio = 0.3;
+  materials[5].inversion_threshold = 0.2;
+  materials[5].stiffening_exponent = 3.5;
   materials[1].youngs_modulus = 5e3;
   materials[1].poisson_ratio = 0.3;
   materials[1].inversion_threshold = 0.2;
@@ -120,6 +127,9 @@ TEST(Material, InvalidParametersAreProgrammingErrors) {
   NeoHookeanParameters bad_threshold;
   bad_threshold.inversion_threshold = 0.0;
   EXPECT_DEATH(NeoHookean{bad_threshold}, "threshold");
+  NeoHookeanParameters bad_exponent;
+  bad_exponent.stiffening_exponent = 1.5;
+  EXPECT_DEATH(NeoHookean{bad_exponent}, "stiffening exponent");
 }
 
 TEST(Material, RestStateHasZeroEnergyAndStress) {
@@ -134,6 +144,7 @@ TEST(Material, EnergyStressAndDerivativeMatchClosedFormReference) {
   // Above the threshold and uninverted, psi_hat is the reference form itself.
   double worst_energy = 0, worst_stress = 0, worst_derivative = 0;
   for (const NeoHookeanParameters& parameters : TestMaterials()) {
+    if (parameters.stiffening_exponent != 2.0) continue;  // eq. (1a): its own test below
     const NeoHookean material(parameters);
     std::mt19937 rng(7);
     for (Regime regime : {Regime::kRandom, Regime::kRepeated, Regime::kNearThreshold}) {
@@ -425,6 +436,65 @@ TEST(Material, SmallStrainStressMatchesLinearElasticity) {
       EXPECT_LE((p - linear).norm(), 1e-4 * linear.norm()) << grad_u;
     }
   }
+}
+
+TEST(Material, StiffeningLawMatchesItsClosedFormInUniaxialStretch) {
+  // F = diag(s, 1, 1): J = s, so by hand (README eq. 1a)
+  //   psi = 2 mu / alpha^2 (s^alpha - 1) - 2 mu / alpha ln s + lambda / 2 (ln s)^2 + psi_c(s),
+  //   P_11 = 2 mu / alpha (s^(alpha-1) - 1 / s) + lambda ln s / s + psi_c'(s),
+  // with psi_c(s) = -k (s - 1)^3 / 2592 below s = 1; P_22 = P_33 = lambda ln s + s psi_c'(s)
+  // (the lateral stretches stay 1, where the stretch and log terms cancel).
+  NeoHookeanParameters parameters;
+  parameters.youngs_modulus = 4.5e4;
+  parameters.stiffening_exponent = 6.82;
+  const NeoHookean material(parameters);
+  const double mu = material.mu(), lambda = material.lambda(), k = material.compression_stiffness(),
+               alpha = 6.82;
+  for (double s : {0.55, 0.8, 0.97, 1.0, 1.03, 1.25, 1.6}) {
+    const double m = std::min(s - 1.0, 0.0);
+    const double psi = 2 * mu / (alpha * alpha) * (std::pow(s, alpha) - 1) -
+                       2 * mu / alpha * std::log(s) + 0.5 * lambda * std::log(s) * std::log(s) -
+                       k * m * m * m / 2592;
+    const double dpsi_c = -3 * k * m * m / 2592;
+    const double p11 =
+        2 * mu / alpha * (std::pow(s, alpha - 1) - 1 / s) + lambda * std::log(s) / s + dpsi_c;
+    const double p22 = lambda * std::log(s) + s * dpsi_c;
+    const Eigen::Matrix3d f = Eigen::Vector3d(s, 1, 1).asDiagonal();
+    const Eigen::Matrix3d p = material.FirstPiola(f);
+    const double scale = mu * std::pow(s, alpha) + lambda + mu;
+    EXPECT_NEAR(material.EnergyDensity(f), psi, 1e-12 * scale) << s;
+    EXPECT_NEAR(p(0, 0), p11, 1e-12 * scale) << s;
+    EXPECT_NEAR(p(1, 1), p22, 1e-12 * scale) << s;
+    EXPECT_NEAR(p(2, 2), p22, 1e-12 * scale) << s;
+  }
+}
+
+TEST(Material, StiffeningExponentTwoIsTheNeoHookeanFormAndLargerOnesStiffen) {
+  // alpha = 2 is the reference form itself (README eq. 1); a larger alpha has the same
+  // small-strain response (SmallStrainStressMatchesLinearElasticity runs both) and stiffens
+  // with stretch. At the volume-preserving F = diag(l, l, 1/l^2) only the stretch terms act:
+  // psi = mu/2 (2 l^2 + l^-4 - 3) and 2 mu/alpha^2 (2 l^alpha + l^(-2 alpha) - 3) by hand; a
+  // pad squeezed to 1/l^2 = 0.31 of its height stores 2.6 times the energy at alpha = 6.82.
+  NeoHookeanParameters neo;
+  neo.youngs_modulus = 4.5e4;
+  NeoHookeanParameters ogden = neo;
+  ogden.stiffening_exponent = 6.82;
+  const NeoHookean soft(neo), stiff(ogden);
+  const double mu = soft.mu(), alpha = 6.82;
+  std::mt19937 rng(3);
+  for (double l : {1.05, 1.3, 1.8}) {
+    const Eigen::Matrix3d f = DeformationWithStretches(Eigen::Vector3d(l, l, 1 / (l * l)), rng);
+    const double neo_energy = 0.5 * mu * (2 * l * l + std::pow(l, -4) - 3);
+    const double ogden_energy =
+        2 * mu / (alpha * alpha) * (2 * std::pow(l, alpha) + std::pow(l, -2 * alpha) - 3);
+    EXPECT_NEAR(soft.EnergyDensity(f), neo_energy, 1e-9 * mu) << l;
+    EXPECT_NEAR(stiff.EnergyDensity(f), ogden_energy, 1e-9 * mu) << l;
+    if (l == 1.8) EXPECT_GT(ogden_energy, 2.0 * neo_energy);
+  }
+  EXPECT_LE((stiff.StressDerivative(Eigen::Matrix3d::Identity(), HessianKind::kExact) -
+             soft.StressDerivative(Eigen::Matrix3d::Identity(), HessianKind::kExact))
+                .norm(),
+            1e-9 * soft.StressDerivative(Eigen::Matrix3d::Identity(), HessianKind::kExact).norm());
 }
 
 }  // namespace
