@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -34,10 +35,12 @@ constexpr double kFdTolerance = 1e-6;
 
 void CheckRestDerivatives(Regime regime, double size, unsigned seed) {
   double worst_energy = 0, worst_force = 0;
-  for (const double nu : {0.0, 0.3, 0.45}) {
+  // (nu, alpha): neo-Hookean at three nu, and the heel pad's stiffening law (README §1a).
+  for (const auto& [nu, alpha] : {std::pair{0.0, 2.0}, {0.3, 2.0}, {0.45, 2.0}, {0.45, 6.82}}) {
     NeoHookeanParameters parameters;
     parameters.youngs_modulus = 5e4;
     parameters.poisson_ratio = nu;
+    parameters.stiffening_exponent = alpha;
     const NeoHookean material(parameters);
     std::mt19937 rng(seed);
     for (int sample = 0; sample < 6; ++sample) {
