@@ -162,27 +162,6 @@ void StretchPower(double sigma, double alpha, double epsilon, double* w, double*
   *curvature = w2;
 }
 
-// (w'(a) - w'(b)) / (a - b) without cancellation for a ~ b (README eq. 8a).
-double StretchSlopeDividedDifference(double a, double b, double alpha, double epsilon) {
-  if (alpha == 2.0) return 2.0;
-  const double curvature_at_threshold = alpha * (alpha - 1.0) * std::pow(epsilon, alpha - 2.0);
-  // Above epsilon: alpha (a^p - b^p) / (a - b), p = alpha - 1, as
-  // alpha a^(p-1) expm1(p t) / expm1(t) with t = ln(b / a).
-  const auto above = [alpha](double x, double y) {
-    const double t = std::log1p((y - x) / x);
-    const double p = alpha - 1.0;
-    if (t == 0.0) return alpha * p * std::pow(x, p - 1.0);
-    return alpha * std::pow(x, p - 1.0) * std::expm1(p * t) / std::expm1(t);
-  };
-  const bool a_above = a >= epsilon, b_above = b >= epsilon;
-  if (a_above && b_above) return above(a, b);
-  if (!a_above && !b_above) return curvature_at_threshold;
-  if (!a_above) std::swap(a, b);  // now a >= epsilon > b
-  // A weighted mean of the two pieces' slopes, as in LogSlopeDividedDifference.
-  const double upper = a - epsilon, lower = epsilon - b;
-  return (upper * above(a, epsilon) + lower * curvature_at_threshold) / (upper + lower);
-}
-
 // The principal-space state of psi_hat at sigma (README eqs. 3-6).
 PrincipalState EvaluatePrincipal(const Eigen::Vector3d& sigma, const Coefficients& c) {
   const double lambda = c.lambda, k = c.compression, epsilon = c.epsilon;
@@ -251,6 +230,27 @@ double LogSlopeDividedDifference(double a, double b, double epsilon) {
   return -(above / (a * epsilon) + below / (epsilon * epsilon)) / (above + below);
 }
 
+// c_s (w'(sigma_i) - w'(sigma_j)) / (sigma_i - sigma_j) without cancellation for
+// sigma_i ~ sigma_j (README eq. 8a), from the state's scaled slopes and curvatures (no
+// further powers): above epsilon c_s alpha a^(alpha-2) expm1((alpha-1) t) / expm1(t) with
+// t = ln(b / a), where c_s alpha a^(alpha-2) = c_s w'(a) / a.
+double StretchSlopeDividedDifference(const PrincipalState& s, int i, int j, const Coefficients& c) {
+  if (c.alpha == 2.0) return 2.0 * c.stretch;
+  const double epsilon = c.epsilon;
+  if (s.sigma(i) < epsilon && s.sigma(j) < epsilon) return s.stretch_curvature(i);  // w'' const
+  if (s.sigma(i) < epsilon) std::swap(i, j);  // now sigma_i >= epsilon
+  const double a = s.sigma(i), b = s.sigma(j);
+  const auto from_a = [&](double y) {
+    const double t = std::log1p((y - a) / a);
+    if (t == 0.0) return s.stretch_curvature(i);
+    return s.stretch_slope(i) / a * std::expm1((c.alpha - 1.0) * t) / std::expm1(t);
+  };
+  if (b >= epsilon) return from_a(b);
+  // Across epsilon: a weighted mean of the two pieces' slopes, as in LogSlopeDividedDifference.
+  const double upper = a - epsilon, lower = epsilon - b;
+  return (upper * from_a(epsilon) + lower * s.stretch_curvature(j)) / (upper + lower);
+}
+
 Eigen::Vector3d StressFromState(const PrincipalState& s) {
   return s.stretch_slope + s.coupling * s.log_slope;
 }
@@ -268,7 +268,7 @@ PrincipalHessian HessianFromState(const PrincipalState& s, const Coefficients& c
     const int i = kPairFirst[p];
     const int j = kPairSecond[p];
     h.difference_quotient(p) =
-        c.stretch * StretchSlopeDividedDifference(s.sigma(i), s.sigma(j), c.alpha, epsilon) +
+        StretchSlopeDividedDifference(s, i, j, c) +
         s.coupling * LogSlopeDividedDifference(s.sigma(i), s.sigma(j), epsilon);
     double sum = s.sigma(i) + s.sigma(j);
     // Signed floor; |sum| < floor goes to +floor, the side the SVD ordering

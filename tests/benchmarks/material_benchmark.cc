@@ -52,8 +52,12 @@ std::vector<Element> MakeElements(bool compressed) {
   return elements;
 }
 
-void BM_ElementEnergyGradientHessian(benchmark::State& state, bool compressed, HessianKind kind) {
-  const NeoHookean material(NeoHookeanParameters{});
+// alpha: the stretch term's exponent (2 neo-Hookean; 6.82 the heel pad's stiffening law).
+void BM_ElementEnergyGradientHessian(benchmark::State& state, bool compressed, HessianKind kind,
+                                     double alpha = 2.0) {
+  NeoHookeanParameters parameters;
+  parameters.stiffening_exponent = alpha;
+  const NeoHookean material(parameters);
   const std::vector<Element> elements = MakeElements(compressed);
   double energy;
   Vector12d gradient;
@@ -104,6 +108,10 @@ BENCHMARK_CAPTURE(BM_ElementEnergyGradientHessian, well_shaped_exact, false, Hes
 BENCHMARK_CAPTURE(BM_ElementEnergyGradientHessian, compressed_psd, true,
                   HessianKind::kProjectedPsd);
 BENCHMARK_CAPTURE(BM_ElementEnergyGradientHessian, compressed_exact, true, HessianKind::kExact);
+BENCHMARK_CAPTURE(BM_ElementEnergyGradientHessian, well_shaped_psd_stiffening, false,
+                  HessianKind::kProjectedPsd, 6.82);
+BENCHMARK_CAPTURE(BM_ElementEnergyGradientHessian, compressed_psd_stiffening, true,
+                  HessianKind::kProjectedPsd, 6.82);
 BENCHMARK_CAPTURE(BM_ElementEnergyGradient, well_shaped, false);
 BENCHMARK_CAPTURE(BM_ElementEnergyGradient, compressed, true);
 BENCHMARK_CAPTURE(BM_SignedSvd, well_shaped, false);
