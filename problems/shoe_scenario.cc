@@ -36,11 +36,13 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   if (!(o.body_edge_length > 0) || !(o.contact_stiffness > 0) || !(o.free_fall_mass_scale > 0) ||
       !(o.start_gap >= 0) || !(o.body_mass >= 0) || !(o.load_fraction >= 0) ||
       !(o.sole_thickness > 0) || !(o.sole_margin >= 0) || !std::isfinite(o.lean_torque) ||
+      !(std::abs(o.roll) <= o.roll_balance.max_roll) ||
       (o.load_point && !(*o.load_point >= 0 && *o.load_point <= 1))) {
     throw InputError("shoe scenario", "options",
                      "edge length, stiffness, free-fall scale and sole thickness must be "
                      "positive; gap, margin, body mass and load fraction non-negative; the "
-                     "torque finite; the load point in [0, 1]",
+                     "torque finite; the load point in [0, 1]; the roll within the largest "
+                     "roll (30 degrees)",
                      "check the shoe options");
   }
   Scenario scenario;
@@ -99,7 +101,20 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   }
   r.support_seconds = SecondsSince(start);
   start = std::chrono::steady_clock::now();
-  scenario.start = StartAbove(*scenario.body, scenario.support, o.start_gap, "shoe");
+  if (o.balance_roll) {
+    EquilibriumOptions equilibrium = scenario.design.equilibrium;
+    equilibrium.contact_stiffness = o.contact_stiffness;
+    equilibrium.free_fall_mass_scale = o.free_fall_mass_scale;
+    const RollBalance balance = BalanceRoll(*scenario.body, scenario.support, o.start_gap,
+                                            equilibrium, o.roll_balance, "shoe");
+    scenario.start = balance.start;
+    r.roll = balance.BriefReport();
+    r.roll_radians = balance.roll;
+  } else {
+    scenario.start =
+        RolledStartAbove(*scenario.body, scenario.support, o.roll, o.start_gap, "shoe");
+    r.roll_radians = o.roll;
+  }
   scenario.design.placement_gap = o.start_gap;
   r.start_seconds = SecondsSince(start);
   if (o.negative_image) {
@@ -136,6 +151,8 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   description << "shoe sole (" << o.preset << (o.negative_image ? ", negative image" : ", flat")
               << ", lean " << o.lean_torque << " N m";
   if (o.load_point) description << ", load at " << 100 * *o.load_point << " % from the heel";
+  if (o.balance_roll || o.roll != 0)
+    description << ", roll " << r.roll_radians / RollBalanceOptions::kDegree << " degrees";
   description << ")";
   FinishScenario(description.str(), support.str(), o.contact_stiffness, o.free_fall_mass_scale,
                  o.design_space, std::move(active), &scenario, &r);

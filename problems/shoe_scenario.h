@@ -2,8 +2,9 @@
 // loaded by half of a 75 kg adult's weight as an external force on the core plus an optional
 // pitch torque for leaning (paper: "By tweaking this torque, we can simulate the effect of
 // the human body leaning forwards or backwards"); the core translates vertically and
-// pitches only; the sole's top face is designed. Starts flat or from the negative image.
-// Presets "quick" and "paper" (≥ 10k body vertices). SI units; y up, the foot along +z.
+// pitches only (at a roll given or balanced once); the sole's top face is designed. Starts flat or
+// from the negative image. Presets "quick" and "paper" (≥ 10k body vertices). SI units; y up, the
+// foot along +z.
 #pragma once
 
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "problems/foot_body.h"
 #include "problems/negative_image.h"
+#include "problems/roll_balance.h"
 #include "problems/scenario.h"
 #include "problems/scenario_parts.h"
 
@@ -41,6 +43,12 @@ struct ShoeScenarioOptions {
   // length, Teranishi et al. 2013); turned into a pitch torque on the core, added to
   // lean_torque. Unset: through the core's centre.
   std::optional<double> load_point;
+  // The foot's roll about its length axis (z), held by the lock: `roll` (rad), or, with
+  // balance_roll, the roll at which it stands on the sole with no torque about its length
+  // (problems/roll_balance.h; a scan is not taken standing level).
+  bool balance_roll = false;
+  double roll = 0;
+  RollBalanceOptions roll_balance;
   bool negative_image = false;
   NegativeImageOptions negative{0.01, 0, 3, 0.006, 10, 0.5, 0.001};
   std::string lock = "tx,tz,ry,rz";  // vertical translation and pitch (about x) only

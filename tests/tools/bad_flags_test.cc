@@ -74,6 +74,8 @@ std::vector<BadFlagCase> Cases(const std::string& dir) {
        {shoe, "--parameterization=spline", "--filter_radius=1e-6", out},
        "--filter_radius"},
       {"ergo_optimize", {shoe, "--placement=sideways", out}, "--placement"},
+      {"ergo_optimize", {shoe, "--shoe_roll=40", out}, "--shoe_roll"},
+      {"ergo_optimize", {shoe, "--shoe_roll=level", out}, "--shoe_roll"},
       {"ergo_optimize", {shoe, "--score_sides=support", out}, "--score_sides"},
       {"ergo_optimize", {shoe, "--design_metric=riemann", out}, "--design_metric"},
       {"ergo_optimize", {shoe, "--vtu_format=xml", out}, "--vtu_format"},

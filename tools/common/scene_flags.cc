@@ -100,6 +100,10 @@ DEFINE_string(shoe_load_point, "auto",
               "shoe: where the load's line meets the sole, as a fraction of the foot's length "
               "from the heel (quiet standing: 0.445); auto: 0.445 for a user's foot, through the "
               "core's centre for the generated one");
+DEFINE_string(shoe_roll, "0",
+              "shoe: the foot's roll about its length in degrees (> 0 turns +x up), held while "
+              "standing; or balance: the roll at which the load through the core's centre "
+              "leaves no torque about the length, found by a few equilibria on the sole");
 DEFINE_string(shoe_sole_outline, "rectangle",
               "shoe: the sole's outline: rectangle, or footprint (the foot's footprint grown by "
               "--shoe_sole_margin: a fitted insole, printed as such)");
@@ -290,6 +294,23 @@ std::optional<double> ShoeLoadPointFlag(bool generated_foot) {
   return FractionFlag(FLAGS_shoe_load_point, "shoe_load_point", "auto");
 }
 
+// --shoe_roll: an angle in degrees, or balance.
+void ApplyShoeRollFlag(ShoeScenarioOptions* o) {
+  const std::string& text = FLAGS_shoe_roll;
+  o->balance_roll = text == "balance";
+  if (o->balance_roll) {
+    o->roll_balance.progress = [](const std::string& line) { std::cout << "  " << line << "\n"; };
+    return;
+  }
+  char* end = nullptr;
+  const double degrees = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(std::abs(degrees) <= 30)) {
+    throw InputError("--shoe_roll", "", "'" + text + "' is not an angle within ±30 degrees",
+                     "give e.g. 0 or 11.5, or balance");
+  }
+  o->roll = degrees * RollBalanceOptions::kDegree;
+}
+
 // The flags every scene shares, applied to its options struct.
 template <typename Options>
 void ApplyCommonFlags(Options* o) {
@@ -325,6 +346,7 @@ void WarnIfStiffnessUncalibrated(const char* scene) {
 
 void PrintReport(const ScenarioBuildReport& r) {
   std::cout << "  " << r.body << "\n  " << r.support << "\n";
+  if (!r.roll.empty()) std::cout << "  roll balance: " << r.roll << "\n";
   if (!r.negative_image.empty()) std::cout << "  negative image: " << r.negative_image << "\n";
   std::cout << "  built in "
             << r.body_seconds + r.support_seconds + r.negative_image_seconds + r.start_seconds
@@ -365,6 +387,7 @@ Scenario MakeShoeFromFlags() {
   }
   o.lean_torque = FLAGS_shoe_lean_torque;
   o.load_point = ShoeLoadPointFlag(o.user_body.empty());
+  ApplyShoeRollFlag(&o);
   if (FLAGS_shoe_sole_outline != "rectangle" && FLAGS_shoe_sole_outline != "footprint") {
     throw InputError("--shoe_sole_outline", "", "'" + FLAGS_shoe_sole_outline + "' is unknown",
                      "use rectangle or footprint");
