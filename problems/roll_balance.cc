@@ -1,10 +1,12 @@
 #include "problems/roll_balance.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <utility>
+#include <vector>
 
 #include "ergo/contact/support.h"
 #include "ergo/equilibrium/placement.h"
@@ -40,6 +42,14 @@ Eigen::Vector3d UnbalancedTorque(const LayeredBody& body, const BodyState& state
   for (Eigen::Index i = 0; i < positions.rows(); ++i)
     torque += (positions.row(i).transpose() - c).cross(mass[i] * body.gravity());
   return torque;
+}
+
+Vertices RolledRestPositions(const LayeredBody& body, double roll) {
+  const Vertices& rest = body.rest().vertices;
+  if (roll == 0) return rest;
+  const Eigen::Matrix3d turn = RotationExp(Eigen::Vector3d(0, 0, roll));
+  const Eigen::RowVector3d centre = body.core_centre().transpose();
+  return ((rest.rowwise() - centre) * turn.transpose()).rowwise() + centre;
 }
 
 BodyState RolledStartAbove(const LayeredBody& body, const TriMesh& support, double roll, double gap,
@@ -82,7 +92,9 @@ RollBalance BalanceRoll(const LayeredBody& body, const TriMesh& support, double 
     double roll = 0, torque = 0;
     BodyState start;
   };
+  std::vector<double> tried;
   auto solve = [&](double roll) {
+    tried.push_back(roll);
     Trial trial{roll, 0, RolledStartAbove(body, support, roll, gap, scenario)};
     const EquilibriumResult result = solver.Solve(surface, trial.start);
     ++best.solves;
@@ -120,8 +132,14 @@ RollBalance BalanceRoll(const LayeredBody& body, const TriMesh& support, double 
     if (std::abs(b.torque) <= negligible) return finish(b, true);
     const double slope = (b.torque - a.torque) / (b.roll - a.roll);
     double roll = b.roll - b.torque / slope;
-    if (!std::isfinite(roll) || best.solves >= options.max_solves ||
-        (std::abs(roll) > options.max_roll && std::abs(b.roll) >= options.max_roll)) {
+    if (!std::isfinite(roll)) roll = b.roll;  // a flat secant: counted as stalled below
+    roll = std::max(-options.max_roll, std::min(options.max_roll, roll));
+    // No root within reach: the secant comes back to a roll already tried (the range's edge
+    // again, or a minimum of the torque that does not reach zero).
+    const bool stalled = std::any_of(tried.begin(), tried.end(), [&](double earlier) {
+      return std::abs(roll - earlier) < options.tolerance;
+    });
+    if (stalled || best.solves >= options.max_solves) {
       throw InputError(scenario, "roll balance",
                        Format("no roll within %.0f degrees balances the foot (torque %.3g N m "
                               "at %.1f degrees, %.3g at %.1f)",
@@ -129,7 +147,6 @@ RollBalance BalanceRoll(const LayeredBody& body, const TriMesh& support, double 
                               b.roll / kDegree),
                        "check the load point and the scan's axes, or give the roll");
     }
-    roll = std::max(-options.max_roll, std::min(options.max_roll, roll));
     Trial c = solve(roll);
     // Keep the trial nearer the root as the secant's other end.
     if (std::abs(b.torque) < std::abs(a.torque)) a = std::move(b);

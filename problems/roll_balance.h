@@ -28,6 +28,11 @@ namespace ergo {
 Eigen::Vector3d UnbalancedTorque(const LayeredBody& body, const BodyState& state,
                                  const Vertices& positions, const SurfaceContacts& contacts);
 
+// The rest positions of every tet-mesh vertex turned by `roll` (rad) about the z axis through
+// the core's centre: the standing foot's shape, e.g. for the sole's outline. Exactly the rest
+// positions for roll 0.
+Vertices RolledRestPositions(const LayeredBody& body, double roll);
+
 // The body at rest turned by `roll` (rad) about the z axis through its core's centre, then
 // moved along the load until its skin is `gap` above `support`. Throws InputError naming
 // `scenario` when it misses the support.

@@ -66,57 +66,69 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
     scenario.body = loaded;
   }
 
-  // The sole: the foot's outline (x, z) grown by the margin, top at y = 0.
-  auto start = std::chrono::steady_clock::now();
+  // The sole: the standing foot's outline (x, z) grown by the margin, top at y = 0. The foot
+  // stands at its roll, so the outline is the rest shape's turned by it.
   const bool generated_sole = o.user_support.empty();
   ProfileBlock sole;
   double shift_x = 0;
   std::vector<bool> outline_top;
-  if (generated_sole && o.footprint_outline) {
-    OutlineSoleOptions outline;
-    outline.margin = o.sole_margin;
-    outline.thickness = o.sole_thickness;
-    outline.top_spacing = o.sole_top_spacing;
-    outline.wall_spacing = std::max(o.sole_wall_spacing, o.sole_top_spacing);
+  auto make_sole = [&](double roll) {
+    const auto begin = std::chrono::steady_clock::now();
     const LayeredBody& body = *scenario.body;
-    OutlineSole fitted = MakeOutlineSole(body.skin().RestSurface(body.rest().vertices), outline);
-    scenario.support = std::move(fitted.mesh);
-    outline_top = std::move(fitted.top);
-  } else if (generated_sole) {
-    const Vertices& rest = scenario.body->rest().vertices;
-    const Eigen::RowVector3d lo = rest.colwise().minCoeff(), hi = rest.colwise().maxCoeff();
-    shift_x = 0.5 * (lo.x() + hi.x());
-    sole = ProfileBlock{hi.x() - lo.x() + 2 * o.sole_margin,
-                        lo.z() - o.sole_margin,
-                        hi.z() + o.sole_margin,
-                        -o.sole_thickness,
-                        0,
-                        0,
-                        o.sole_top_spacing,
-                        o.sole_wall_spacing};
-    scenario.support = MakeProfileBlock(sole);
-    scenario.support.vertices.col(0).array() += shift_x;
-  } else {
-    scenario.support = LoadUserSupport(o.user_support);
-  }
-  r.support_seconds = SecondsSince(start);
-  start = std::chrono::steady_clock::now();
+    const Vertices standing = RolledRestPositions(body, roll);
+    if (generated_sole && o.footprint_outline) {
+      OutlineSoleOptions outline;
+      outline.margin = o.sole_margin;
+      outline.thickness = o.sole_thickness;
+      outline.top_spacing = o.sole_top_spacing;
+      outline.wall_spacing = std::max(o.sole_wall_spacing, o.sole_top_spacing);
+      OutlineSole fitted = MakeOutlineSole(body.skin().RestSurface(standing), outline);
+      scenario.support = std::move(fitted.mesh);
+      outline_top = std::move(fitted.top);
+    } else if (generated_sole) {
+      const Eigen::RowVector3d lo = standing.colwise().minCoeff(),
+                               hi = standing.colwise().maxCoeff();
+      shift_x = 0.5 * (lo.x() + hi.x());
+      sole = ProfileBlock{hi.x() - lo.x() + 2 * o.sole_margin,
+                          lo.z() - o.sole_margin,
+                          hi.z() + o.sole_margin,
+                          -o.sole_thickness,
+                          0,
+                          0,
+                          o.sole_top_spacing,
+                          o.sole_wall_spacing};
+      scenario.support = MakeProfileBlock(sole);
+      scenario.support.vertices.col(0).array() += shift_x;
+    } else {
+      scenario.support = LoadUserSupport(o.user_support);
+    }
+    r.support_seconds += SecondsSince(begin);
+  };
+  make_sole(o.balance_roll ? 0 : o.roll);
+  const double support_seconds = r.support_seconds;
+  auto start = std::chrono::steady_clock::now();
   if (o.balance_roll) {
     EquilibriumOptions equilibrium = scenario.design.equilibrium;
     equilibrium.contact_stiffness = o.contact_stiffness;
     equilibrium.free_fall_mass_scale = o.free_fall_mass_scale;
     const RollBalance balance = BalanceRoll(*scenario.body, scenario.support, o.start_gap,
                                             equilibrium, o.roll_balance, "shoe");
-    scenario.start = balance.start;
     r.roll = balance.BriefReport();
     r.roll_radians = balance.roll;
+    scenario.start = balance.start;
+    if (generated_sole && balance.roll != 0) {
+      // Balanced on the level foot's sole; the sole is then cut under the standing foot.
+      make_sole(balance.roll);
+      scenario.start =
+          RolledStartAbove(*scenario.body, scenario.support, balance.roll, o.start_gap, "shoe");
+    }
   } else {
     scenario.start =
         RolledStartAbove(*scenario.body, scenario.support, o.roll, o.start_gap, "shoe");
     r.roll_radians = o.roll;
   }
   scenario.design.placement_gap = o.start_gap;
-  r.start_seconds = SecondsSince(start);
+  r.start_seconds = SecondsSince(start) - (r.support_seconds - support_seconds);
   if (o.negative_image) {
     if (generated_sole && !(o.negative.depth < o.sole_thickness - 0.002)) {
       throw InputError("shoe scenario", "negative image depth",
