@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "ergo/contact/support.h"
-#include "ergo/equilibrium/placement.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
 
@@ -44,30 +43,9 @@ Eigen::Vector3d UnbalancedTorque(const LayeredBody& body, const BodyState& state
   return torque;
 }
 
-Vertices RolledRestPositions(const LayeredBody& body, double roll) {
-  const Vertices& rest = body.rest().vertices;
-  if (roll == 0) return rest;
-  const Eigen::Matrix3d turn = RotationExp(Eigen::Vector3d(0, 0, roll));
-  const Eigen::RowVector3d centre = body.core_centre().transpose();
-  return ((rest.rowwise() - centre) * turn.transpose()).rowwise() + centre;
-}
-
-BodyState RolledStartAbove(const LayeredBody& body, const TriMesh& support, double roll, double gap,
-                           const std::string& scenario) {
-  // Level: the rest state itself, bit for bit (MovedRigidly would round c + (p − c) − p).
-  const BodyState rolled = roll == 0 ? RestState(body)
-                                     : MovedRigidly(body, RestState(body), Eigen::Vector3d::Zero(),
-                                                    Eigen::Vector3d(0, 0, roll));
-  const PlacementResult placed =
-      PlaceAboveSupport(body, rolled, Support(support, scenario + " support"), gap);
-  if (!placed.found) {
-    throw InputError(scenario, "start",
-                     Format("the body rolled by %.1f degrees does not meet the support when "
-                            "moved along the load",
-                            roll / kDegree),
-                     "place the body over the support, or give the roll");
-  }
-  return placed.state;
+BodyState RolledRestState(const LayeredBody& body, double roll) {
+  if (roll == 0) return RestState(body);
+  return MovedRigidly(body, RestState(body), Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, roll));
 }
 
 std::string RollBalance::BriefReport() const {
@@ -95,7 +73,7 @@ RollBalance BalanceRoll(const LayeredBody& body, const TriMesh& support, double 
   std::vector<double> tried;
   auto solve = [&](double roll) {
     tried.push_back(roll);
-    Trial trial{roll, 0, RolledStartAbove(body, support, roll, gap, scenario)};
+    Trial trial{roll, 0, StartAbove(body, RolledRestState(body, roll), support, gap, scenario)};
     const EquilibriumResult result = solver.Solve(surface, trial.start);
     ++best.solves;
     if (!result.converged) {

@@ -18,6 +18,7 @@
 #include "ergo/contact/surface_contact.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/tri_mesh.h"
+#include "problems/scenario_parts.h"
 
 namespace ergo {
 
@@ -28,16 +29,10 @@ namespace ergo {
 Eigen::Vector3d UnbalancedTorque(const LayeredBody& body, const BodyState& state,
                                  const Vertices& positions, const SurfaceContacts& contacts);
 
-// The rest positions of every tet-mesh vertex turned by `roll` (rad) about the z axis through
-// the core's centre: the standing foot's shape, e.g. for the sole's outline. Exactly the rest
-// positions for roll 0.
-Vertices RolledRestPositions(const LayeredBody& body, double roll);
-
-// The body at rest turned by `roll` (rad) about the z axis through its core's centre, then
-// moved along the load until its skin is `gap` above `support`. Throws InputError naming
-// `scenario` when it misses the support.
-BodyState RolledStartAbove(const LayeredBody& body, const TriMesh& support, double roll, double gap,
-                           const std::string& scenario);
+// The body at rest turned by `roll` (rad) about the z axis through its core's centre; for
+// roll 0 the rest state itself, bit for bit (a turn by 0 would round c + (p − c) − p). Place
+// it with StartAbove (problems/scenario_parts.h).
+BodyState RolledRestState(const LayeredBody& body, double roll);
 
 struct RollBalanceOptions {
   static constexpr double kDegree = 3.14159265358979323846 / 180;

@@ -261,8 +261,13 @@ std::vector<bool> ActiveWhere(const TriMesh& support,
 
 BodyState StartAbove(const LayeredBody& body, const TriMesh& support, double gap,
                      const std::string& scenario) {
+  return StartAbove(body, RestState(body), support, gap, scenario);
+}
+
+BodyState StartAbove(const LayeredBody& body, const BodyState& from, const TriMesh& support,
+                     double gap, const std::string& scenario) {
   const Support surface(support, scenario + " support");
-  const PlacementResult placed = PlaceAboveSupport(body, RestState(body), surface, gap);
+  const PlacementResult placed = PlaceAboveSupport(body, from, surface, gap);
   if (!placed.found) {
     throw InputError(scenario, "start",
                      "the body does not meet the support when moved along the load",

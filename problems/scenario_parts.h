@@ -124,6 +124,9 @@ std::vector<bool> ActiveWhere(const TriMesh& support,
 // support. Throws InputError naming `scenario` when the body misses the support.
 BodyState StartAbove(const LayeredBody& body, const TriMesh& support, double gap,
                      const std::string& scenario);
+// The same from another pose (`from`, e.g. the rest pose turned).
+BodyState StartAbove(const LayeredBody& body, const BodyState& from, const TriMesh& support,
+                     double gap, const std::string& scenario);
 
 // Replaces scenario->support by its negative image and scenario->start by the body just
 // above it: the body is lowered from its start (`gap` above the support) to contact and

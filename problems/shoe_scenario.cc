@@ -75,7 +75,8 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   auto make_sole = [&](double roll) {
     const auto begin = std::chrono::steady_clock::now();
     const LayeredBody& body = *scenario.body;
-    const Vertices standing = RolledRestPositions(body, roll);
+    const Vertices standing =
+        roll == 0 ? body.rest().vertices : DeformedPositions(body, RolledRestState(body, roll));
     if (generated_sole && o.footprint_outline) {
       OutlineSoleOptions outline;
       outline.margin = o.sole_margin;
@@ -119,12 +120,12 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
     if (generated_sole && balance.roll != 0) {
       // Balanced on the level foot's sole; the sole is then cut under the standing foot.
       make_sole(balance.roll);
-      scenario.start =
-          RolledStartAbove(*scenario.body, scenario.support, balance.roll, o.start_gap, "shoe");
+      scenario.start = StartAbove(*scenario.body, RolledRestState(*scenario.body, balance.roll),
+                                  scenario.support, o.start_gap, "shoe");
     }
   } else {
-    scenario.start =
-        RolledStartAbove(*scenario.body, scenario.support, o.roll, o.start_gap, "shoe");
+    scenario.start = StartAbove(*scenario.body, RolledRestState(*scenario.body, o.roll),
+                                scenario.support, o.start_gap, "shoe");
     r.roll_radians = o.roll;
   }
   scenario.design.placement_gap = o.start_gap;

@@ -118,9 +118,9 @@ TEST(Problems, ScannedFootWithAnatomicalPriorsStandsWithItsCentreOfPressureAtThe
   // Level as scanned, then rolled about the length towards pronation (+x, the lateral side,
   // up): the shares at each roll are the README's measurement.
   for (double degrees : {0.0, 6.0, 11.5, 15.0}) {
-    const BodyState start =
-        RolledStartAbove(*scenario.body, scenario.support, degrees * RollBalanceOptions::kDegree,
-                         options.start_gap, "scan");
+    const BodyState start = StartAbove(
+        *scenario.body, RolledRestState(*scenario.body, degrees * RollBalanceOptions::kDegree),
+        scenario.support, options.start_gap, "scan");
     const EquilibriumResult result = solver.Solve(Support(scenario.support), start);
     ASSERT_TRUE(result.converged) << result.FullReport();
     const SurfaceContacts& contacts = solver.last_evaluation().contacts;

@@ -110,8 +110,8 @@ TEST(RollBalance, TheMirroredFootBalancesAtTheOppositeRoll) {
   // The level foot's torque about its length, for scale.
   EquilibriumSolver solver(*scenario.body, equilibrium);
   const Support sole(scenario.support);
-  const EquilibriumResult level = solver.Solve(
-      sole, RolledStartAbove(*scenario.body, scenario.support, 0, options.start_gap, "shoe"));
+  const EquilibriumResult level =
+      solver.Solve(sole, StartAbove(*scenario.body, scenario.support, options.start_gap, "shoe"));
   ASSERT_TRUE(level.converged);
   const double level_torque =
       UnbalancedTorque(*scenario.body, level.state, solver.last_evaluation().positions,
