@@ -48,7 +48,10 @@ class RobustDesignObjective : public Objective {
 
 // The placements of a K-placement robust objective (K = 1, 3 or 5): the centred pose; for
 // K = 3 also ±shift along the body's longer horizontal extent, for K = 5 along both
-// horizontal axes (PlacementChecks without tilts).
-std::vector<Placement> RobustPlacements(const LayeredBody& body, int count, double shift);
+// horizontal axes (PlacementChecks without tilts). With tilt > 0 (rad), also the body held
+// tilted by ±tilt about each axis whose rotation the lock holds (PlacementChecks' tilts: two
+// more placements for the shoe and the chair, four for the mouse).
+std::vector<Placement> RobustPlacements(const LayeredBody& body, int count, double shift,
+                                        double tilt = 0);
 
 }  // namespace ergo

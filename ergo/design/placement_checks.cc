@@ -35,10 +35,14 @@ std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, do
       checks.push_back(p);
     }
   }
-  if (with_tilts) {
-    for (int component : body.lock().FreeComponents()) {
-      if (component < 3) continue;
-      const int axis = component - 3;
+  if (with_tilts && angle != 0) {
+    // Only the held rotations: a tilt about a free axis re-settles to the centred
+    // equilibrium (the scanned foot's ±1° pitch checks scored its centred φ to 3e-4, and
+    // each other to 1e-13), while the lock keeps a tilt about a held axis: the posture a
+    // person holds a little differently (the foot rolled, the seated body leaning sideways,
+    // the hand turned on the mouse).
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!body.lock().locked[3 + axis]) continue;
       if (std::abs(down[axis]) > 0.5) continue;  // a yaw about the load: no tilt
       for (double sign : {1.0, -1.0}) {
         Placement p;

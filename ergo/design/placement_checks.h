@@ -1,5 +1,5 @@
 // Placement checks: how a design scores when the body lands a little off the pose the
-// optimiser saw — shifted a few millimetres across the support, tilted by a degree — as a
+// optimiser saw — shifted a few millimetres across the support, held tilted by a degree — as a
 // person never sits, stands or grips twice in exactly the same place (DESIGN.md §8). Each
 // check places the body afresh (DesignPlacement::kFresh) from the moved start pose on its own
 // copy of the problem. Units: m, rad.
@@ -25,7 +25,9 @@ struct Placement {
 };
 
 // ±shift along the two world axes most nearly perpendicular to the body's load, and, when
-// with_tilts, ±angle about each free core rotation axis perpendicular to the load.
+// with_tilts, ±angle about each world axis across the load about which the core lock holds
+// the rotation: a tilt about a free axis re-settles to the centred placement, so it is no
+// check.
 std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, double angle,
                                        bool with_tilts);
 

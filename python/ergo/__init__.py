@@ -98,15 +98,18 @@ def scenario(name=None, preset=None, flagfile=None, **flags):
 
 
 def minimize(problem, x0=None, optimizer="nlopt-lbfgs", max_evals=40, max_seconds=0,
-             robust_placements=1, robust_shift=0.003, progress=None):
+             robust_placements=1, robust_shift=0.003, robust_tilt=0.0, progress=None):
     """Runs a built-in optimiser (ergo.optimizers()) on a DesignProblem from x0 (default
     its initial design) within max_evals evaluations / max_seconds. robust_placements 3
-    or 5 averages phi over the body placed at +-robust_shift (m). progress: a callable
+    or 5 averages phi over the body placed at +-robust_shift (m); robust_tilt > 0 (rad)
+    adds the body held tilted by +-robust_tilt about each axis across the load whose
+    rotation the core lock holds (scenario.robust_tilt: --robust_tilt_deg). progress: a callable
     given each history entry (a dict); returning False stops the run. Returns a dict: x,
     phi, initial_phi, reduction_percent, evaluations, newton_iterations, seconds,
     stop_reason, history, candidates. Ctrl-C raises ergo.Interrupted with that dict."""
     result, interrupted = _ergo._minimize(problem, x0, optimizer, max_evals, max_seconds,
-                                          robust_placements, robust_shift, progress)
+                                          robust_placements, robust_shift, robust_tilt,
+                                          progress)
     if interrupted:
         raise Interrupted(result)
     return result

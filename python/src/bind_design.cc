@@ -31,6 +31,7 @@ struct ScenarioHandle {
   std::shared_ptr<DesignProblem> problem;  // as the flags pose it (γ, placement)
   int robust_placements = 1;
   double robust_shift = 0;  // m
+  double robust_tilt = 0;   // rad
 };
 
 // A design problem and what it references; evaluations of one problem are serialised
@@ -194,6 +195,7 @@ void BindDesign(py::module_& m) {
       .def_property_readonly("robust_placements",
                              [](const ScenarioHandle& s) { return s.robust_placements; })
       .def_property_readonly("robust_shift", [](const ScenarioHandle& s) { return s.robust_shift; })
+      .def_property_readonly("robust_tilt", [](const ScenarioHandle& s) { return s.robust_tilt; })
       .def(
           "problem",
           [](const ScenarioHandle& s, const std::string& placement,
@@ -226,6 +228,7 @@ void BindDesign(py::module_& m) {
           ApplyGammaFlags(handle.problem.get());
           handle.robust_placements = RobustPlacementsFlag();
           handle.robust_shift = RobustShiftFlag();
+          handle.robust_tilt = RobustTiltFlag();
         }
         return handle;
       },
@@ -297,7 +300,7 @@ void BindDesign(py::module_& m) {
       "_minimize",
       [](const ProblemHandle& h, const py::object& x0_object, const std::string& name,
          int max_evals, double max_seconds, int robust_placements, double robust_shift,
-         const py::object& progress) {
+         double robust_tilt, const py::object& progress) {
         std::string error;
         std::unique_ptr<Optimizer> optimizer = MakeOptimizer(name, OptimizerOptions(), &error);
         if (!optimizer) throw InputError("optimizer", "", "\"" + name + "\" is unknown", error);
@@ -307,15 +310,19 @@ void BindDesign(py::module_& m) {
         if (robust_placements != 1 && robust_placements != 3 && robust_placements != 5)
           throw InputError("robust_placements", "", "must be 1, 3 or 5",
                            "5: centred and ±shift on both axes");
+        if (!(robust_tilt >= 0 && robust_tilt <= 0.5))
+          throw InputError("robust_tilt", "", "must be between 0 and 0.5 rad",
+                           "0.0175 (1 degree); 0 = no tilted placements");
         const Eigen::VectorXd x0 =
             x0_object.is_none() ? h.problem->InitialDesign() : x0_object.cast<Eigen::VectorXd>();
         RequireDesign(*h.problem, x0);
         DesignProblem path(*h.problem);
         path.ClearWarmStarts();
         std::unique_ptr<Objective> objective;
-        if (robust_placements > 1)
-          objective = std::make_unique<RobustDesignObjective>(
-              path, RobustPlacements(path.body(), robust_placements, robust_shift));
+        const std::vector<Placement> placements =
+            RobustPlacements(path.body(), robust_placements, robust_shift, robust_tilt);
+        if (placements.size() > 1)
+          objective = std::make_unique<RobustDesignObjective>(path, placements);
         else
           objective = std::make_unique<DesignObjective>(path);
         Budget budget;
@@ -349,7 +356,7 @@ void BindDesign(py::module_& m) {
       },
       py::arg("problem"), py::arg("x0"), py::arg("optimizer"), py::arg("max_evals"),
       py::arg("max_seconds"), py::arg("robust_placements"), py::arg("robust_shift"),
-      py::arg("progress"));
+      py::arg("robust_tilt"), py::arg("progress"));
 }
 
 }  // namespace ergo::python

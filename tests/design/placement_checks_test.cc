@@ -4,6 +4,7 @@
 #include "ergo/design/placement_checks.h"
 
 #include <cmath>
+#include <iostream>
 
 #include <gtest/gtest.h>
 
@@ -37,8 +38,8 @@ TEST(Design, MovedRigidlyKeepsTheShapeAndTurnsAboutTheCoreCentre) {
   EXPECT_LT((moved.torque_angle - tilt).norm(), 1e-15);
 }
 
-TEST(Design, PlacementChecksShiftAcrossTheLoadAndTiltAboutFreeAxesOnly) {
-  const LayeredBody pitch_only = Cube("tx,tz,ry,rz");  // the shoe's lock: pitch about x
+TEST(Design, PlacementChecksShiftAcrossTheLoadAndTiltAboutHeldAxesOnly) {
+  const LayeredBody pitch_only = Cube("tx,tz,ry,rz");  // the shoe's lock: pitch about x free
   const std::vector<Placement> checks = PlacementChecks(pitch_only, 3e-3, M_PI / 180, true);
   ASSERT_EQ(checks.size(), 6u);
   const Eigen::Vector3d down = pitch_only.TotalLoad().normalized();
@@ -50,18 +51,63 @@ TEST(Design, PlacementChecksShiftAcrossTheLoadAndTiltAboutFreeAxesOnly) {
       EXPECT_NEAR(p.shift.dot(down), 0, 1e-15) << p.name;
       EXPECT_TRUE(p.tilt.isZero()) << p.name;
     } else {
-      ++tilts;
-      EXPECT_NEAR(std::abs(p.tilt.x()), M_PI / 180, 1e-15) << p.name;
+      ++tilts;  // the roll about z, held by the lock (y is the load: a yaw, no tilt)
+      EXPECT_EQ(p.tilt.x(), 0);
       EXPECT_EQ(p.tilt.y(), 0);
-      EXPECT_EQ(p.tilt.z(), 0);
+      EXPECT_NEAR(std::abs(p.tilt.z()), M_PI / 180, 1e-15) << p.name;
     }
   }
   EXPECT_EQ(shifts, 4);
   EXPECT_EQ(tilts, 2);
   EXPECT_EQ(checks[0].name, "x+3mm");
-  // Rotations locked (the mouse): shifts only; a yaw about the load is no tilt.
-  EXPECT_EQ(PlacementChecks(Cube("tx,tz,rx,ry,rz"), 3e-3, M_PI / 180, true).size(), 4u);
-  EXPECT_EQ(PlacementChecks(Cube("tx,tz,rx,rz"), 3e-3, M_PI / 180, true).size(), 4u);
+  EXPECT_EQ(checks[4].name, "rz+1deg");
+  // Rotations all held (the mouse): tilts about x and z; all free: shifts only.
+  const std::vector<Placement> held = PlacementChecks(Cube("tx,tz,rx,ry,rz"), 3e-3, 0.01, true);
+  ASSERT_EQ(held.size(), 8u);
+  EXPECT_EQ(held[4].name, "rx+0.572958deg");
+  EXPECT_EQ(held[6].tilt, Eigen::Vector3d(0, 0, 0.01));
+  EXPECT_EQ(PlacementChecks(Cube("tx,tz"), 3e-3, M_PI / 180, true).size(), 4u);
+  EXPECT_EQ(PlacementChecks(Cube("tx,tz,ry,rz"), 3e-3, M_PI / 180, false).size(), 4u);
+}
+
+// Why only held axes: placed afresh, a body tilted about its free pitch axis re-settles to the
+// centred equilibrium and scores the same, while one tilted about a held axis stays turned by
+// the tilt (the lock keeps it) and presses one edge harder.
+TEST(Design, ATiltAboutAFreeAxisResettlesWhileTheLockKeepsAHeldOne) {
+  const LayeredBody body = Cube("tx,tz,ry,rz");
+  const TriMesh slab = MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {4, 1, 4});
+  DesignOptions options;
+  options.equilibrium.contact_stiffness = 4e6;
+  options.placement = DesignPlacement::kFresh;
+  const DesignProblem problem(body, slab, RestState(body), options);
+  const Eigen::VectorXd x = problem.InitialDesign();
+  auto placed = [&](const Eigen::Vector3d& tilt) {
+    Placement placement;
+    placement.tilt = tilt;
+    DesignProblem moved = PlacedProblem(problem, placement);
+    return moved.Evaluate(x, false);
+  };
+  const double degree = M_PI / 180;
+  const DesignEvaluation centred = placed(Eigen::Vector3d::Zero());
+  const DesignEvaluation free_tilt = placed(Eigen::Vector3d(degree, 0, 0));
+  const DesignEvaluation held_tilt = placed(Eigen::Vector3d(0, 0, degree));
+  ASSERT_TRUE(centred.ok && free_tilt.ok && held_tilt.ok)
+      << centred.message << " / " << free_tilt.message << " / " << held_tilt.message;
+  const Eigen::Matrix3d& level = centred.equilibrium.state.rotation;
+  // Free pitch: back to the centred pose (to the solver's tolerance) and the same score.
+  const Eigen::Matrix3d free_turn = free_tilt.equilibrium.state.rotation * level.transpose();
+  EXPECT_LT(std::abs(std::atan2(free_turn(2, 1), free_turn(1, 1))), 1e-6);
+  EXPECT_NEAR(free_tilt.phi, centred.phi, 1e-6 * centred.phi);
+  // Held roll: the lock's pitch updates keep R = Rx(θ)·Rz(tilt), whose first row is Rz's
+  // (cos, −sin, 0): still turned by exactly the tilt. The lower edge presses harder
+  // (measured: φ 1.3 % above the centred one, 3.97e6 against 3.92e6).
+  const Eigen::Matrix3d& held = held_tilt.equilibrium.state.rotation;
+  EXPECT_NEAR(std::atan2(-held(0, 1), held(0, 0)), degree, 1e-12);
+  EXPECT_NEAR(held(0, 2), 0, 1e-12);
+  std::cout << "phi centred " << centred.phi << ", pitch +1 deg " << free_tilt.phi
+            << ", roll +1 deg " << held_tilt.phi << "\n";
+  EXPECT_GT(held_tilt.phi - centred.phi, 1e3 * std::abs(free_tilt.phi - centred.phi));
+  EXPECT_GT(held_tilt.phi, 1.005 * centred.phi);
 }
 
 TEST(Design, APlacedProblemStartsFromTheMovedPose) {

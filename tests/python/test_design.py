@@ -105,6 +105,17 @@ def test_builtin_optimiser_result_and_history(bump):
         bump.problem().evaluate(np.zeros(3))
 
 
+def test_robust_tilt_adds_the_held_tilts_to_the_mean(bump):
+    # The bump scene's ball holds all its rotations: x and z lie across the load, so a tilt
+    # adds four placements (±tilt about each) to the centred one, one equilibrium each.
+    result = ergo.minimize(bump.problem(), max_evals=2, robust_tilt=0.0175)
+    assert result["ok"]
+    assert result["time_split"]["equilibria"] == 5 * result["evaluations"]
+    assert bump.robust_tilt == 0.0
+    with pytest.raises(ergo.InputError, match="robust_tilt"):
+        ergo.minimize(bump.problem(), max_evals=2, robust_tilt=-0.1)
+
+
 def test_ctrl_c_stops_minimize_with_the_best_design_kept(bump):
     problem = bump.problem()
     evaluated = threading.Event()

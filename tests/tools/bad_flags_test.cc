@@ -67,6 +67,8 @@ std::vector<BadFlagCase> Cases(const std::string& dir) {
       {"ergo_optimize", {shoe, "--gamma_power=1000", out}, "--gamma_power"},
       {"ergo_optimize", {shoe, "--contact_stiffness=-5", out}, "--contact_stiffness"},
       {"ergo_optimize", {shoe, "--robust_placements=2", out}, "--robust_placements"},
+      {"ergo_optimize", {shoe, "--robust_tilt_deg=-1", out}, "--robust_tilt_deg"},
+      {"ergo_optimize", {shoe, "--robust_tilt_deg=nan", out}, "--robust_tilt_deg"},
       {"ergo_optimize", {shoe, "--optimizer=newton", out}, "--optimizer"},
       {"ergo_optimize", {shoe, "--lock=tx,ty,tz", out}, "translation"},
       {"ergo_optimize", {shoe, "--filter_radius=-2", out}, "--filter_radius"},

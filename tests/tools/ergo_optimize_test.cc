@@ -223,7 +223,7 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   EXPECT_LT(GetNumber(summary, "optimized_score", "summary"),
             GetNumber(summary, "initial_score", "summary"));
   EXPECT_LE(GetNumber(summary, "evaluations", "summary"), kShoeBudget);
-  // Shoe checks: ±3 mm along both horizontal axes and ±1° of pitch, each with a verdict.
+  // Shoe checks: ±3 mm along both horizontal axes and ±1° of held roll, each with a verdict.
   const Json& checks = GetMember(summary, "placement_checks", "summary");
   EXPECT_EQ(checks.size(), sanitized ? 0u : 6u);
   for (size_t i = 0; i < checks.size(); ++i) {

@@ -59,6 +59,7 @@ TEST(ToolsPaperPlan, RunsGetTheirSceneFlagfileThePresetAndTheirOwnFlags) {
   EXPECT_TRUE(Has(a, "--preset=paper"));
   EXPECT_TRUE(Has(a, "--max_evals=20"));
   EXPECT_TRUE(Has(a, "--placement_checks=false"));
+  EXPECT_TRUE(Has(a, "--robust_tilt_deg=0"));  // one placement: the flagfile's tilts off too
   EXPECT_TRUE(Has(a, "--parameterization=normal"));
   EXPECT_TRUE(Has(a, "--gamma=auto"));
   EXPECT_TRUE(Has(a, "--gamma_power=-1"));

@@ -42,6 +42,10 @@ DEFINE_int32(robust_placements, 1,
              "equilibrium and adjoint, in parallel threads");
 DEFINE_double(robust_shift_mm, 3,
               "--robust_placements: the shift of the off-centre placements, mm");
+DEFINE_double(robust_tilt_deg, 0,
+              "also average over the body held tilted by ± this much about each rotation axis "
+              "across the load that the core lock holds (the placement checks' tilts: 2 more "
+              "placements for the shoe and the chair, 4 for the mouse), degrees; 0: none");
 DEFINE_string(line_search, "golden",
               "the equilibrium's Newton line search when the full step fails Armijo: golden "
               "(the paper's golden-section minimisation) or interpolated (the quadratic "
@@ -78,10 +82,13 @@ int RobustPlacementsFlag() {
                      "1 = the centred placement only");
   }
   RequireInRange("robust_shift_mm", FLAGS_robust_shift_mm, 0.01, 50, "millimetres, e.g. 3");
+  RequireInRange("robust_tilt_deg", FLAGS_robust_tilt_deg, 0, 30, "degrees, e.g. 1");
   return FLAGS_robust_placements;
 }
 
 double RobustShiftFlag() { return 1e-3 * FLAGS_robust_shift_mm; }
+
+double RobustTiltFlag() { return FLAGS_robust_tilt_deg * M_PI / 180; }
 
 void ApplyDesignFlags(Scenario* scenario) {
   RobustPlacementsFlag();

@@ -17,10 +17,12 @@ namespace ergo {
 // Throws InputError naming the flag for unusable values.
 void ApplyDesignFlags(Scenario* scenario);
 
-// --robust_placements (1, 3 or 5; checked) and --robust_shift_mm in metres: the objective
-// averaged over that many placements (solvers/robust_design_objective.h).
+// --robust_placements (1, 3 or 5; checked), --robust_shift_mm in metres and
+// --robust_tilt_deg in radians: the objective averaged over those placements
+// (solvers/robust_design_objective.h).
 int RobustPlacementsFlag();
 double RobustShiftFlag();
+double RobustTiltFlag();
 
 // γ from --gamma/--gamma_power, set on `problem` and returned. Prints how it was chosen.
 // Throws InputError when auto cannot be computed (e.g. ψ(x₀) = 0). `at_x0`, if given, is an

@@ -94,6 +94,8 @@ std::vector<std::string> PaperRun::Arguments(const PaperSettings& settings,
       std::string("--placement_checks=") + (settings.placement_checks ? "true" : "false"),
       "--plot=false",  // ergo_paper draws its own, one scale per scene
       "--progress=false"};
+  // One placement is the paper's own experiment: not the flagfile's tilted placements either.
+  if (settings.robust_placements == 1) a.push_back("--robust_tilt_deg=0");
   a.push_back(std::string("--negative_image=") + (negative_image ? "true" : "false"));
   if (negative_image && depth > 0) a.push_back("--negative_image_depth=" + Decimal(depth));
   if (raw_vertices) a.push_back("--parameterization=normal");

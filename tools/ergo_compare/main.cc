@@ -271,7 +271,7 @@ int Compare() {
   // The objective every optimiser minimises (the mean over placements when robust), and the
   // fresh score their kept designs must earn, as ergo_optimize poses them.
   const std::vector<Placement> robust =
-      RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
+      RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag(), RobustTiltFlag());
   RoundsProblem rounds_problem;
   rounds_problem.fresh_score = [&](const Eigen::VectorXd& x, EvaluationTiming* timing) {
     std::string failure;

@@ -96,7 +96,9 @@ DEFINE_bool(placement_checks, true,
 DEFINE_double(placement_shift_mm, 3,
               "placement checks: the body lands this far off along each horizontal axis, mm");
 DEFINE_double(placement_tilt_deg, 1,
-              "placement checks: and tilted by this much about each free rotation axis, degrees");
+              "placement checks: and held tilted by this much about each rotation axis across the "
+              "load that the core lock holds (the shoe's roll, the chair's sideways lean, "
+              "the mouse's two tilts; 0: no tilts), degrees");
 
 namespace ergo {
 namespace {
@@ -251,7 +253,6 @@ int Run() {
   summary.scenario = &scenario;
   summary.optimizer = FLAGS_designer == "ergo" ? FLAGS_optimizer : FLAGS_designer;
   summary.placement = DesignPlacementName(scenario.design.placement);
-  summary.robust_placements = RobustPlacementsFlag();
   summary.gamma = gamma;
   DesignEvaluation initial_evaluation = first;
   initial_evaluation.phi = first.zeta + gamma * first.psi;  // φ with the γ just chosen
@@ -266,7 +267,8 @@ int Run() {
 
   // The objective, and the score a kept design must earn placed afresh.
   const std::vector<Placement> robust =
-      RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
+      RobustPlacements(*scenario.body, RobustPlacementsFlag(), RobustShiftFlag(), RobustTiltFlag());
+  summary.robust_placements = static_cast<int>(robust.size());
   RoundsProblem rounds_problem;
   rounds_problem.make_objective = [&]() -> std::unique_ptr<Objective> {
     DesignProblem path(problem);

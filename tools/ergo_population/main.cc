@@ -208,7 +208,8 @@ Body MakeBody(const PopulationSpec& spec, const FlagValues& flags, const std::st
   body.fresh->set_gamma(gamma);
   DesignEvaluation initial = first;
   initial.phi = first.zeta + gamma * first.psi;
-  body.robust = RobustPlacements(*body.scenario.body, RobustPlacementsFlag(), RobustShiftFlag());
+  body.robust = RobustPlacements(*body.scenario.body, RobustPlacementsFlag(), RobustShiftFlag(),
+                                 RobustTiltFlag());
   // The scale is the fresh objective's own value at x₀ (r_b = 1 there to the last bit; the
   // first evaluation above starts its solve from the scene's pose, not a placement's).
   body.scale = FreshScoreObjective(*body.fresh, body.robust, stop).Evaluate(x0, false).phi;
@@ -392,7 +393,9 @@ int Run(int argc, char** argv) {
   summary.optimizer = FLAGS_optimizer;
   summary.ranks = ranks.size();
   summary.threads = threads;
-  summary.robust_placements = RobustPlacementsFlag();
+  // Placements per body (the tilts' count follows the scene's lock, the same for every body).
+  summary.robust_placements =
+      bodies.empty() ? RobustPlacementsFlag() : static_cast<int>(bodies.front().robust.size());
   summary.initial_score = phi0;
   summary.result = population.rounds.result;
   summary.bytes_per_evaluation = (ranks.BytesSent() - bytes_before) / evaluations;
