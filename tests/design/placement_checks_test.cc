@@ -21,6 +21,15 @@ LayeredBody Cube(const std::string& lock) {
   return testing::MakeHollowCubeBody(0.1, 3, 1e4, 0.45, options, Eigen::Vector3d(0, 0.06, 0));
 }
 
+// The cube above a flat slab, its equilibria started from `placement`.
+DesignProblem CubeOnSlab(const LayeredBody& body, DesignPlacement placement) {
+  const TriMesh slab = MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {4, 1, 4});
+  DesignOptions options;
+  options.equilibrium.contact_stiffness = 4e6;
+  options.placement = placement;
+  return DesignProblem(body, slab, RestState(body), options);
+}
+
 TEST(Design, MovedRigidlyKeepsTheShapeAndTurnsAboutTheCoreCentre) {
   const LayeredBody body = Cube("tx,tz");
   BodyState state = RestState(body);
@@ -75,11 +84,7 @@ TEST(Design, PlacementChecksShiftAcrossTheLoadAndTiltAboutHeldAxesOnly) {
 // the tilt (the lock keeps it) and presses one edge harder.
 TEST(Design, ATiltAboutAFreeAxisResettlesWhileTheLockKeepsAHeldOne) {
   const LayeredBody body = Cube("tx,tz,ry,rz");
-  const TriMesh slab = MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {4, 1, 4});
-  DesignOptions options;
-  options.equilibrium.contact_stiffness = 4e6;
-  options.placement = DesignPlacement::kFresh;
-  const DesignProblem problem(body, slab, RestState(body), options);
+  const DesignProblem problem = CubeOnSlab(body, DesignPlacement::kFresh);
   const Eigen::VectorXd x = problem.InitialDesign();
   auto placed = [&](const Eigen::Vector3d& tilt) {
     Placement placement;
@@ -112,11 +117,7 @@ TEST(Design, ATiltAboutAFreeAxisResettlesWhileTheLockKeepsAHeldOne) {
 
 TEST(Design, APlacedProblemStartsFromTheMovedPose) {
   const LayeredBody body = Cube("tx,tz");
-  const TriMesh slab = MakeBox({-0.2, -0.1, -0.2}, {0.2, 0, 0.2}, {4, 1, 4});
-  DesignOptions options;
-  options.equilibrium.contact_stiffness = 4e6;
-  options.placement = DesignPlacement::kFollowed;
-  const DesignProblem problem(body, slab, RestState(body), options);
+  const DesignProblem problem = CubeOnSlab(body, DesignPlacement::kFollowed);
   Placement placement;
   placement.shift = Eigen::Vector3d(0.003, 0, 0);
   const DesignProblem placed = PlacedProblem(problem, placement);

@@ -15,6 +15,28 @@
 namespace ergo {
 namespace {
 
+// Central differences of the mean along its own gradient and a random direction (fresh
+// solves are deterministic: differences of 1e-7 m stay within one contact configuration).
+void ExpectGradientMatchesDifferences(RobustDesignObjective& robust, const Eigen::VectorXd& x0,
+                                      const Eigen::VectorXd& gradient, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd random(x0.size());
+  for (Eigen::Index i = 0; i < random.size(); ++i) random[i] = normal(rng);
+  for (const Eigen::VectorXd& d :
+       {Eigen::VectorXd(gradient.normalized()), Eigen::VectorXd(random.normalized())}) {
+    double best = INFINITY;
+    for (double h : {1e-6, 1e-7, 1e-8}) {
+      const double fd =
+          (robust.Evaluate(x0 + h * d, false).phi - robust.Evaluate(x0 - h * d, false).phi) /
+          (2 * h);
+      best = std::min(best, std::abs(fd - gradient.dot(d)) /
+                                std::max(std::abs(gradient.dot(d)), 1e-3 * gradient.norm()));
+    }
+    EXPECT_LT(best, 1e-4);
+  }
+}
+
 TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDifferences) {
   if (testing::SanitizedBuild())
     GTEST_SKIP() << "finite differences over five placements take minutes under the sanitizers; "
@@ -65,24 +87,7 @@ TEST(Solvers, RobustObjectiveIsTheMeanOverPlacementsAndItsGradientMatchesDiffere
   DesignProblem centred(problem);
   EXPECT_GT(std::abs(centred.Evaluate(x0, false).phi - at.phi), 1e-3 * at.phi);
 
-  // Central differences of the mean (fresh solves are deterministic: differences of 1e-7 m
-  // stay within one contact configuration).
-  std::mt19937 rng(2);
-  std::normal_distribution<double> normal;
-  Eigen::VectorXd random(x0.size());
-  for (Eigen::Index i = 0; i < random.size(); ++i) random[i] = normal(rng);
-  for (const Eigen::VectorXd& d :
-       {Eigen::VectorXd(at.gradient.normalized()), Eigen::VectorXd(random.normalized())}) {
-    double best = INFINITY;
-    for (double h : {1e-6, 1e-7, 1e-8}) {
-      const double fd =
-          (robust.Evaluate(x0 + h * d, false).phi - robust.Evaluate(x0 - h * d, false).phi) /
-          (2 * h);
-      best = std::min(best, std::abs(fd - at.gradient.dot(d)) /
-                                std::max(std::abs(at.gradient.dot(d)), 1e-3 * at.gradient.norm()));
-    }
-    EXPECT_LT(best, 1e-4);
-  }
+  ExpectGradientMatchesDifferences(robust, x0, at.gradient, 2);
 
   // A clone evaluates the same (its placements run in parallel threads).
   std::unique_ptr<Objective> clone = robust.Clone();
@@ -157,22 +162,7 @@ TEST(Solvers, RobustObjectiveWithHeldTiltsAveragesThemAndItsGradientMatchesDiffe
   // A 2° tilt moves the ball's contact on the bump: each tilted φ differs from the centred.
   for (int p = 1; p < 5; ++p) EXPECT_GT(std::abs(phi[p] - phi[0]), 1e-3 * phi[0]) << names[p];
 
-  std::mt19937 rng(3);
-  std::normal_distribution<double> normal;
-  Eigen::VectorXd random(x0.size());
-  for (Eigen::Index i = 0; i < random.size(); ++i) random[i] = normal(rng);
-  for (const Eigen::VectorXd& d :
-       {Eigen::VectorXd(at.gradient.normalized()), Eigen::VectorXd(random.normalized())}) {
-    double best = INFINITY;
-    for (double h : {1e-6, 1e-7, 1e-8}) {
-      const double fd =
-          (robust.Evaluate(x0 + h * d, false).phi - robust.Evaluate(x0 - h * d, false).phi) /
-          (2 * h);
-      best = std::min(best, std::abs(fd - at.gradient.dot(d)) /
-                                std::max(std::abs(at.gradient.dot(d)), 1e-3 * at.gradient.norm()));
-    }
-    EXPECT_LT(best, 1e-4);
-  }
+  ExpectGradientMatchesDifferences(robust, x0, at.gradient, 3);
 }
 }  // namespace
 }  // namespace ergo
