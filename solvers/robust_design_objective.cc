@@ -89,22 +89,22 @@ std::vector<Placement> RobustPlacements(const LayeredBody& body, int count, doub
   CHECK(tilt >= 0);
   std::vector<Placement> placements(1);
   placements[0].name = "centred";
-  // PlacementChecks: ± along the first horizontal axis, ± along the second, then the tilts.
-  const std::vector<Placement> checks = PlacementChecks(body, shift, tilt, tilt > 0);
-  const auto tilts = checks.begin() + 4;
+  // PlacementChecks: ± along the first horizontal axis, then ± along the second.
+  const std::vector<Placement> shifts = PlacementChecks(body, shift, 0, /*with_tilts=*/false);
   if (count == 5) {
-    placements.insert(placements.end(), checks.begin(), tilts);
+    placements.insert(placements.end(), shifts.begin(), shifts.end());
   } else if (count == 3) {
     // ± along the body's longer horizontal extent (a foot's length, a seat's depth).
     const Vertices& rest = body.rest().vertices;
     const Eigen::RowVector3d extent = rest.colwise().maxCoeff() - rest.colwise().minCoeff();
-    const double first = std::abs(extent.dot(checks[0].shift.normalized().transpose()));
-    const double second = std::abs(extent.dot(checks[2].shift.normalized().transpose()));
+    const double first = std::abs(extent.dot(shifts[0].shift.normalized().transpose()));
+    const double second = std::abs(extent.dot(shifts[2].shift.normalized().transpose()));
     const int offset = first >= second ? 0 : 2;
-    placements.push_back(checks[offset]);
-    placements.push_back(checks[offset + 1]);
+    placements.push_back(shifts[offset]);
+    placements.push_back(shifts[offset + 1]);
   }
-  placements.insert(placements.end(), tilts, checks.end());
+  const std::vector<Placement> tilts = HeldTilts(body, tilt);
+  placements.insert(placements.end(), tilts.begin(), tilts.end());
   return placements;
 }
 

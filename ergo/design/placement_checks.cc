@@ -12,16 +12,25 @@
 #include <omp.h>
 
 namespace ergo {
+namespace {
+
+constexpr const char* kAxis[3] = {"x", "y", "z"};
+
+// The unit direction of the body's load (down when it has none).
+Eigen::Vector3d LoadDirection(const LayeredBody& body) {
+  const Eigen::Vector3d load = body.TotalLoad();
+  return load.norm() > 0 ? load.normalized() : Eigen::Vector3d(0, -1, 0);
+}
+
+}  // namespace
 
 std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, double angle,
                                        bool with_tilts) {
-  const Eigen::Vector3d load = body.TotalLoad();
-  const Eigen::Vector3d down = load.norm() > 0 ? load.normalized() : Eigen::Vector3d(0, -1, 0);
+  const Eigen::Vector3d down = LoadDirection(body);
   // The two world axes least aligned with the load.
   std::array<int, 3> axes = {0, 1, 2};
   std::sort(axes.begin(), axes.end(),
             [&](int a, int b) { return std::abs(down[a]) < std::abs(down[b]); });
-  constexpr const char* kAxis[3] = {"x", "y", "z"};
   std::vector<Placement> checks;
   char label[64];
   for (int axis : {std::min(axes[0], axes[1]), std::max(axes[0], axes[1])}) {
@@ -35,25 +44,35 @@ std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, do
       checks.push_back(p);
     }
   }
-  if (with_tilts && angle != 0) {
-    // Only the held rotations: a tilt about a free axis re-settles to the centred
-    // equilibrium (the scanned foot's ±1° pitch checks scored its centred φ to 3e-4, and
-    // each other to 1e-13), while the lock keeps a tilt about a held axis: the posture a
-    // person holds a little differently (the foot rolled, the seated body leaning sideways,
-    // the hand turned on the mouse).
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!body.lock().locked[3 + axis]) continue;
-      if (std::abs(down[axis]) > 0.5) continue;  // a yaw about the load: no tilt
-      for (double sign : {1.0, -1.0}) {
-        Placement p;
-        p.tilt = sign * angle * Eigen::Vector3d::Unit(axis);
-        std::snprintf(label, sizeof(label), "r%s%+gdeg", kAxis[axis], sign * angle * 180 / M_PI);
-        p.name = label;
-        checks.push_back(p);
-      }
-    }
+  if (with_tilts) {
+    const std::vector<Placement> tilts = HeldTilts(body, angle);
+    checks.insert(checks.end(), tilts.begin(), tilts.end());
   }
   return checks;
+}
+
+std::vector<Placement> HeldTilts(const LayeredBody& body, double angle) {
+  std::vector<Placement> tilts;
+  if (angle == 0) return tilts;
+  const Eigen::Vector3d down = LoadDirection(body);
+  char label[64];
+  // Only the held rotations: a tilt about a free axis re-settles to the centred
+  // equilibrium (the scanned foot's ±1° pitch checks scored its centred φ to 3e-4, and
+  // each other to 1e-13), while the lock keeps a tilt about a held axis: the posture a
+  // person holds a little differently (the foot rolled, the seated body leaning sideways,
+  // the hand turned on the mouse).
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!body.lock().locked[3 + axis]) continue;
+    if (std::abs(down[axis]) > 0.5) continue;  // a yaw about the load: no tilt
+    for (double sign : {1.0, -1.0}) {
+      Placement p;
+      p.tilt = sign * angle * Eigen::Vector3d::Unit(axis);
+      std::snprintf(label, sizeof(label), "r%s%+gdeg", kAxis[axis], sign * angle * 180 / M_PI);
+      p.name = label;
+      tilts.push_back(p);
+    }
+  }
+  return tilts;
 }
 
 void ForEachInParallel(int count, const std::function<void(int)>& task) {

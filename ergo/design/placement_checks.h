@@ -31,6 +31,10 @@ struct Placement {
 std::vector<Placement> PlacementChecks(const LayeredBody& body, double shift, double angle,
                                        bool with_tilts);
 
+// The tilts alone: ±angle about each world axis across the load whose rotation the lock
+// holds (none for angle 0).
+std::vector<Placement> HeldTilts(const LayeredBody& body, double angle);
+
 // A copy of `problem` whose evaluations place the body afresh from its start pose moved by
 // `placement` (a zero placement: the centred pose).
 DesignProblem PlacedProblem(const DesignProblem& problem, const Placement& placement);

@@ -70,6 +70,12 @@ TEST(Design, PlacementChecksShiftAcrossTheLoadAndTiltAboutHeldAxesOnly) {
   EXPECT_EQ(tilts, 2);
   EXPECT_EQ(checks[0].name, "x+3mm");
   EXPECT_EQ(checks[4].name, "rz+1deg");
+  // The tilts alone are the checks' tail; no angle, no tilts.
+  const std::vector<Placement> held_tilts = HeldTilts(pitch_only, M_PI / 180);
+  ASSERT_EQ(held_tilts.size(), 2u);
+  EXPECT_EQ(held_tilts[1].name, checks[5].name);
+  EXPECT_EQ(held_tilts[1].tilt, checks[5].tilt);
+  EXPECT_TRUE(HeldTilts(pitch_only, 0).empty());
   // Rotations all held (the mouse): tilts about x and z; all free: shifts only.
   const std::vector<Placement> held = PlacementChecks(Cube("tx,tz,rx,ry,rz"), 3e-3, 0.01, true);
   ASSERT_EQ(held.size(), 8u);
