@@ -7,7 +7,9 @@
 #include <sstream>
 #include <vector>
 
+#include "ergo/body/anatomical_priors.h"
 #include "ergo/body/core_lock.h"
+#include "ergo/design/lengthwise_shares.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
 #include "problems/load_point.h"
@@ -163,6 +165,16 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   std::ostringstream description;
   description << "shoe sole (" << o.preset << (o.negative_image ? ", negative image" : ", flat")
               << ", lean " << o.lean_torque << " N m";
+  // The foot's regions from its heel; none for a user's body whose heel end cannot be told
+  // (its load through the core's centre: with a load point, LoadPointTorque refused it above).
+  try {
+    scenario.regions.from_min_z =
+        o.user_body.empty() ||
+        HeelAtMinZ(scenario.body->rest().vertices, o.user_body.anatomy.heel_end, "shoe regions");
+    scenario.regions.names = {"rearfoot", "midfoot", "forefoot"};
+    scenario.regions.ends = FootRegionEnds();
+  } catch (const InputError&) {
+  }
   if (o.load_point) description << ", load at " << 100 * *o.load_point << " % from the heel";
   if (o.balance_roll || o.roll != 0)
     description << ", roll " << r.roll_radians / RollBalanceOptions::kDegree << " degrees";

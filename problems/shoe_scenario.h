@@ -41,8 +41,9 @@ struct ShoeScenarioOptions {
   // Where the load's line of action meets the sole, as a fraction of the foot's length from
   // the heel (quiet standing: the centre of pressure lies at 44.5 ± 5.5 % of the foot's
   // length, Teranishi et al. 2013); turned into a pitch torque on the core, added to
-  // lean_torque. Unset: through the core's centre.
-  std::optional<double> load_point;
+  // lean_torque. Unset: through the core's centre (the generated foot's centre of pressure is
+  // then at 0.348 of its length; ergo's default for it before 2026-12-07).
+  std::optional<double> load_point = 0.445;
   // The foot's roll about its length axis (z), held by the lock: `roll` (rad), or, with
   // balance_roll, the roll at which it stands on the sole with no torque about its length
   // (problems/roll_balance.h; a scan is not taken standing level).

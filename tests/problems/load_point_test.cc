@@ -1,5 +1,6 @@
 #include "problems/load_point.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -9,6 +10,7 @@
 
 #include "ergo/contact/support.h"
 #include "ergo/design/centre_of_pressure.h"
+#include "ergo/design/lengthwise_shares.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/mesh/input_error.h"
 #include "problems/chair_scenario.h"
@@ -78,6 +80,54 @@ TEST(Problems, ChairLoadPointPutsTheCentreOfPressureThere) {
   }
 }
 
+// Issue 14's standing split, on ergo's own foot: the generated foot on a flat sole with the
+// default load point (0.445 of its length from the heel, quiet standing, Teranishi et al.
+// 2013) carries 40–65 % of its load under the rearfoot (< 30 % of the length) and under 25 %
+// under the midfoot (30–60 %), as feet standing barefoot do (rearfoot 54–55 % of 416 adults on
+// a pressure plate, J Physiol Anthropol 2020; midfoot 8 %, Cavanagh et al. 1987). Measured
+// 2026-12-07: 51.1 / 0.0 / 48.9 %; the arch (the core 35 mm above the plantar line) does not
+// touch. With the load through the core's centre (the default before) the centre of pressure
+// was at 0.348 and the rearfoot carried 69.1 %, over the range. The shipped scan does not
+// meet the split level (README "Scans"): its lateral border is its lowest skin.
+TEST(Problems, GeneratedFootWithTheDefaultLoadPointSplitsItsLoadAsStandingFeetDo) {
+  const ShoeScenarioOptions options = ShoeScenarioOptions::FromPreset("quick");
+  ASSERT_TRUE(options.load_point.has_value());
+  EXPECT_EQ(*options.load_point, 0.445);
+  const Scenario scenario = MakeShoeScenario(options);
+  EquilibriumSolver solver(*scenario.body, scenario.design.equilibrium);
+  const EquilibriumResult result = solver.Solve(Support(scenario.support), scenario.start);
+  ASSERT_TRUE(result.converged) << result.FullReport();
+  const SurfaceContacts& contacts = solver.last_evaluation().contacts;
+  ASSERT_EQ(scenario.regions.names, (std::vector<std::string>{"rearfoot", "midfoot", "forefoot"}));
+  EXPECT_TRUE(scenario.regions.from_min_z);  // the generated foot's heel is at its smallest z
+  const LengthwiseShares split =
+      ComputeLengthwiseShares(*scenario.body, contacts, scenario.regions.ends, true);
+  ASSERT_EQ(split.shares.size(), 3u);
+  std::cout << "generated foot, load point 0.445: rearfoot " << split.shares[0] << ", midfoot "
+            << split.shares[1] << ", forefoot " << split.shares[2] << "\n";
+  EXPECT_GE(split.shares[0], 0.40);
+  EXPECT_LE(split.shares[0], 0.65);
+  EXPECT_LT(split.shares[1], 0.25);
+  const CentreOfPressure cop = ComputeCentreOfPressure(*scenario.body, result.state, contacts);
+  EXPECT_NEAR(cop.z_fraction, 0.445, 0.01);
+
+  // The load through the core's centre (--shoe_load_point=none, the default before): the
+  // centre of pressure falls back to about a third of the length and the heel takes too much.
+  ShoeScenarioOptions centred = options;
+  centred.load_point.reset();
+  const Scenario old = MakeShoeScenario(centred);
+  EquilibriumSolver old_solver(*old.body, old.design.equilibrium);
+  const EquilibriumResult old_result = old_solver.Solve(Support(old.support), old.start);
+  ASSERT_TRUE(old_result.converged) << old_result.FullReport();
+  const SurfaceContacts& old_contacts = old_solver.last_evaluation().contacts;
+  const LengthwiseShares old_split =
+      ComputeLengthwiseShares(*old.body, old_contacts, old.regions.ends, true);
+  std::cout << "through the core's centre: rearfoot " << old_split.shares[0] << ", CoP "
+            << ComputeCentreOfPressure(*old.body, old_result.state, old_contacts).z_fraction
+            << "\n";
+  EXPECT_GT(old_split.shares[0], 0.65);
+}
+
 TEST(Problems, LoadPointOutsideTheFootIsRefused) {
   ShoeScenarioOptions options = ShoeScenarioOptions::FromPreset("quick");
   options.load_point = 1.5;
@@ -99,7 +149,10 @@ TEST(Problems, LoadPointOutsideTheFootIsRefused) {
 // 2026-12-06): 32.3 / 38.8 / 28.9 %, arch-index thirds 30.7 / 20.1 / 49.2 %, rear half 44.7 %.
 // Rolled towards pronation (--shoe_roll, the lateral side up) the shares reach the targets:
 // 6 degrees 37.9 / 20.9 / 41.2 %, 11.5 degrees 43.1 / 10.2 / 46.7 %, 15 degrees 45.7 / 5.3 /
-// 49.0 %; which roll a person stands at is theirs to state (README "Scans").
+// 49.0 %; which roll a person stands at is theirs to state (README "Scans"). The footprint's
+// arch index (Cavanagh & Rodgers 1987; normal 0.21–0.26) says why: 0.286 level, a low arch,
+// then 0.274, 0.250 and 0.235 (2026-12-07). The generated foot, whose arch does not touch,
+// meets the split level (the test above).
 TEST(Problems, ScannedFootWithAnatomicalPriorsStandsWithItsCentreOfPressureAtTheLoadPoint) {
   if (std::getenv("ERGO_LONG_TESTS") == nullptr)
     GTEST_SKIP() << "a long run: set ERGO_LONG_TESTS=1";
@@ -127,27 +180,41 @@ TEST(Problems, ScannedFootWithAnatomicalPriorsStandsWithItsCentreOfPressureAtThe
     const Vertices& rest = scenario.body->rest().vertices;
     const bool heel_at_min = HeelAtMinZ(rest, HeelEnd::kAuto, "scan");
     const double min_z = rest.col(2).minCoeff(), length = rest.col(2).maxCoeff() - min_z;
-    double share[3] = {0, 0, 0}, thirds[3] = {0, 0, 0}, rear_half = 0, total = 0;
+    auto split = [&](const std::vector<double>& ends) {
+      return ComputeLengthwiseShares(*scenario.body, contacts, ends, heel_at_min).shares;
+    };
+    const std::vector<double> share = split(FootRegionEnds());
+    const std::vector<double> thirds = split({0.27, 0.54, 1});  // of the 0.81 before the toes
+    const double rear_half = split({0.5, 1})[0];
+    // The arch index of the footprint (Cavanagh & Rodgers 1987): the contact area of the middle
+    // third of its length (toes excluded; here they carry nothing) over the whole; 0.21–0.26
+    // for a normal arch, above for a low one.
     const Skin& skin = scenario.body->skin();
+    auto fraction = [&](Eigen::Index l) {
+      const double s = (rest(skin.vertices[l], 2) - min_z) / length;
+      return heel_at_min ? s : 1 - s;
+    };
+    double begin = 1, end = 0, area[3] = {0, 0, 0};
     for (Eigen::Index l = 0; l < skin.vertices.size(); ++l) {
-      const double force = contacts.skin_force(l, 1);  // upward on the foot
-      if (force <= 0) continue;
-      double s = (rest(skin.vertices[l], 2) - min_z) / length;
-      if (!heel_at_min) s = 1 - s;
-      share[s < 0.3 ? 0 : s < 0.6 ? 1 : 2] += force;
-      thirds[s < 0.27 ? 0 : s < 0.54 ? 1 : 2] += force;  // thirds of the 0.81 before the toes
-      if (s < 0.5) rear_half += force;
-      total += force;
+      if (contacts.skin_force(l, 1) <= 0) continue;
+      begin = std::min(begin, fraction(l));
+      end = std::max(end, fraction(l));
     }
-    for (double& region : share) region /= total;
-    for (double& region : thirds) region /= total;
+    for (Eigen::Index l = 0; l < skin.vertices.size(); ++l) {
+      if (contacts.skin_force(l, 1) <= 0) continue;
+      const double t = (fraction(l) - begin) / (end - begin);
+      area[t < 1.0 / 3 ? 0 : t < 2.0 / 3 ? 1 : 2] += skin.rest_areas(l);
+    }
+    const double footprint = area[0] + area[1] + area[2];
     const CentreOfPressure cop = ComputeCentreOfPressure(*scenario.body, result.state, contacts);
     std::cout << "roll " << degrees << " degrees: rearfoot " << share[0] << ", midfoot " << share[1]
               << ", forefoot " << share[2] << "; peak contact at " << 1e3 * result.max_penetration
               << " mm penetration; CoP " << (heel_at_min ? cop.z_fraction : 1 - cop.z_fraction)
               << " of the length\n"
               << "arch-index thirds: rearfoot " << thirds[0] << ", midfoot " << thirds[1]
-              << ", forefoot " << thirds[2] << "; rear half " << rear_half / total << "\n";
+              << ", forefoot " << thirds[2] << "; rear half " << rear_half << "\n"
+              << "footprint " << begin << "–" << end << " of the length, " << 1e4 * footprint
+              << " cm², arch index " << area[1] / footprint << "\n";
     EXPECT_NEAR(heel_at_min ? cop.z_fraction : 1 - cop.z_fraction, 0.445, 0.01);
   }
 }

@@ -77,6 +77,8 @@ std::vector<BadFlagCase> Cases(const std::string& dir) {
        "--filter_radius"},
       {"ergo_optimize", {shoe, "--placement=sideways", out}, "--placement"},
       {"ergo_optimize", {shoe, "--shoe_roll=40", out}, "--shoe_roll"},
+      {"ergo_optimize", {shoe, "--shoe_load_point=centre", out}, "--shoe_load_point"},
+      {"ergo_optimize", {shoe, "--shoe_load_point=1.2", out}, "--shoe_load_point"},
       {"ergo_optimize", {shoe, "--shoe_roll=level", out}, "--shoe_roll"},
       {"ergo_optimize", {shoe, "--score_sides=support", out}, "--score_sides"},
       {"ergo_optimize", {shoe, "--design_metric=riemann", out}, "--design_metric"},

@@ -209,14 +209,27 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
                           "time_split",
                           "stop_reason",
                           "candidates",
-                          "centre_of_pressure"}) {
+                          "centre_of_pressure",
+                          "region_shares"}) {
     EXPECT_NE(FindMember(summary, key), nullptr) << key;
   }
-  // The generated foot's load through its core's centre: the centre of pressure about a
-  // third of the foot's length from the heel (0.348 measured), on the foot.
+  // The default load point, quiet standing's 0.445 of the foot's length from the heel: on the
+  // flat sole every contact force is vertical, so the centre of pressure lies there (moment
+  // balance; the torque uses the rest centre of mass, hence 0.01 as in the load-point tests).
   const double cop = summary["centre_of_pressure"]["initial"]["z_fraction"].get<double>();
-  EXPECT_GT(cop, 0.2);
-  EXPECT_LT(cop, 0.6);
+  EXPECT_NEAR(cop, 0.445, 0.01);
+  // The load's split on the flat sole, rearfoot / midfoot / forefoot, sums to one and keeps
+  // the moment balance's order: the rearfoot, behind the centre of pressure, carries some.
+  const Json& split = GetMember(summary, "region_shares", "summary");
+  const Json& flat = GetMember(split, "initial", "region_shares");
+  const double rear = GetNumber(flat, "rearfoot", "initial"),
+               mid = GetNumber(flat, "midfoot", "initial"),
+               fore = GetNumber(flat, "forefoot", "initial");
+  EXPECT_NEAR(rear + mid + fore, 1.0, 1e-12);
+  EXPECT_GT(rear, 0.2);
+  EXPECT_GT(fore, 0.2);
+  EXPECT_NE(Read(dir + "/summary.md").find("Load split rearfoot / midfoot / forefoot"),
+            std::string::npos);
   // The headline is the body placed afresh: the kept design must beat the flat sole there.
   EXPECT_TRUE(GetBool(summary, "fresh_placement_converged", "summary"));
   EXPECT_GE(GetNumber(summary, "reduction_percent", "summary"), 20.0) << Read(dir + ".log");

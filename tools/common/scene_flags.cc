@@ -96,10 +96,10 @@ DEFINE_double(chair_front_radius, 0.06, "chair: radius of the arc under the knee
 DEFINE_double(chair_body_mass, 30, "chair: mass of the seated body part, kg");
 DEFINE_double(shoe_lean_torque, 0,
               "shoe: torque about x on the foot's core, N m (> 0 leans forward onto the toes)");
-DEFINE_string(shoe_load_point, "auto",
+DEFINE_string(shoe_load_point, "0.445",
               "shoe: where the load's line meets the sole, as a fraction of the foot's length "
-              "from the heel (quiet standing: 0.445); auto: 0.445 for a user's foot, through the "
-              "core's centre for the generated one");
+              "from the heel (quiet standing: 0.445, Teranishi et al. 2013); none: through the "
+              "core's centre (the generated foot's default before 2026-12-07)");
 DEFINE_string(shoe_roll, "0",
               "shoe: the foot's roll about its length in degrees (> 0 turns +x up), held while "
               "standing; or balance: the roll at which the load through the core's centre "
@@ -272,8 +272,6 @@ void ValidateSceneFlags() {
   RequireInRange("mouse_hand_mass", FLAGS_mouse_hand_mass, 0.01, 10, "kg, e.g. 0.45");
 }
 
-// --shoe_load_point: a fraction in [0, 1], or auto (quiet standing's 0.445 for a user's
-// foot; the generated foot keeps its load through the core's centre).
 // A fraction in [0, 1] from a flag, or nullopt for its `word` (none, auto).
 std::optional<double> FractionFlag(const std::string& text, const char* flag, const char* word) {
   if (text == word) return std::nullopt;
@@ -286,12 +284,11 @@ std::optional<double> FractionFlag(const std::string& text, const char* flag, co
   return value;
 }
 
-std::optional<double> ShoeLoadPointFlag(bool generated_foot) {
-  if (FLAGS_shoe_load_point == "auto") {
-    if (generated_foot) return std::nullopt;
-    return 0.445;
-  }
-  return FractionFlag(FLAGS_shoe_load_point, "shoe_load_point", "auto");
+// --shoe_load_point: a fraction in [0, 1], or none (through the core's centre); auto, which
+// flagfiles written before 2026-12-07 may carry, is quiet standing's 0.445 as for every foot.
+std::optional<double> ShoeLoadPointFlag() {
+  if (FLAGS_shoe_load_point == "auto") return 0.445;
+  return FractionFlag(FLAGS_shoe_load_point, "shoe_load_point", "none");
 }
 
 // --shoe_roll: an angle in degrees, or balance.
@@ -386,7 +383,7 @@ Scenario MakeShoeFromFlags() {
     o.sole_wall_spacing = std::max(o.sole_wall_spacing, o.sole_top_spacing);
   }
   o.lean_torque = FLAGS_shoe_lean_torque;
-  o.load_point = ShoeLoadPointFlag(o.user_body.empty());
+  o.load_point = ShoeLoadPointFlag();
   ApplyShoeRollFlag(&o);
   if (FLAGS_shoe_sole_outline != "rectangle" && FLAGS_shoe_sole_outline != "footprint") {
     throw InputError("--shoe_sole_outline", "", "'" + FLAGS_shoe_sole_outline + "' is unknown",

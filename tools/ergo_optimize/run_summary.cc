@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "ergo/design/evaluation_timing.h"
+#include "ergo/design/lengthwise_shares.h"
 
 namespace ergo {
 namespace {
@@ -51,6 +52,21 @@ Json ThreeWay(double initial, double followed, double fresh) {
 }
 
 bool IsShoe(const RunSummary& s) { return s.scenario->name == "shoe"; }
+
+// The load's split along the scenario's regions (the shoe: rearfoot, midfoot, forefoot from
+// the heel) on one placed design; empty without regions, contact or equilibrium.
+std::vector<double> RegionShares(const RunSummary& s, const DesignReport& report) {
+  const LengthRegions& regions = s.scenario->regions;
+  if (regions.names.empty() || !report.evaluation.ok) return {};
+  return ComputeLengthwiseShares(*s.scenario->body, report.pressures.contacts, regions.ends,
+                                 regions.from_min_z)
+      .shares;
+}
+
+// The centre of pressure's fraction of the length from the regions' start (the heel).
+double CentreFraction(const RunSummary& s, const CentreOfPressure& c) {
+  return s.scenario->regions.from_min_z ? c.z_fraction : 1 - c.z_fraction;
+}
 
 double WorstCheckReduction(const RunSummary& s) {
   double worst = std::numeric_limits<double>::infinity();
@@ -99,19 +115,37 @@ Json SummaryJson(const RunSummary& s) {
       ThreeWay(s.initial.skin_contact_area, Of(s.followed, s.followed.skin_contact_area),
                Of(s.optimized, s.optimized.skin_contact_area));
   // Where the skin's contact force acts (a pressure plate's centre of pressure), and as a
-  // fraction of the body's rest extent along z (the shoe: of the foot's length from the heel).
-  auto centre = [](const DesignReport& report) {
+  // fraction of the body's rest extent along z (the shoe: of the foot's length from the heel,
+  // whichever end of z the heel is at).
+  auto centre = [&](const DesignReport& report) {
     const CentreOfPressure& c = report.centre_of_pressure;
     if (!(c.normal_force > 0)) return Json();
     Json out = Json::object();
     out["point_m"] = Json::array({c.point.x(), c.point.y(), c.point.z()});
-    out["z_fraction"] = c.z_fraction;
+    out["z_fraction"] = CentreFraction(s, c);
     return out;
   };
   Json centres = Json::object();
   centres["initial"] = centre(s.initial);
   centres["optimized"] = s.optimized.evaluation.ok ? centre(s.optimized) : Json();
   j["centre_of_pressure"] = centres;
+  // The load's split along the length as a pressure plate's masks read it (lengthwise_shares.h).
+  const LengthRegions& regions = scenario.regions;
+  if (!regions.names.empty()) {
+    auto shares = [&](const DesignReport& report) {
+      const std::vector<double> values = RegionShares(s, report);
+      if (values.empty()) return Json();
+      Json out = Json::object();
+      for (size_t k = 0; k < values.size(); ++k) out[regions.names[k]] = values[k];
+      return out;
+    };
+    Json split = Json::object();
+    split["ends"] = Json::array();
+    for (double end : regions.ends) split["ends"].push_back(end);
+    split["initial"] = shares(s.initial);
+    split["optimized"] = shares(s.optimized);
+    j["region_shares"] = split;
+  }
   j["initial_peak_pressure_Pa"] = s.initial.peak_pressure;
   j["fresh_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
   j["optimized_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
@@ -252,6 +286,30 @@ std::string SummaryMarkdown(const RunSummary& s) {
           "al. 2011): "
        << (met ? "met" : "not met") << " — peak " << Format("%.1f", s.optimized.peak_pressure / 1e3)
        << " kPa, " << Format("%.1f", relief) << " % below the flat sole.\n\n";
+  }
+  const std::vector<double> before = RegionShares(s, s.initial),
+                            after = RegionShares(s, s.optimized);
+  if (!before.empty()) {
+    const LengthRegions& regions = s.scenario->regions;
+    std::string names, bands;
+    for (size_t k = 0; k < regions.names.size(); ++k) {
+      names += (k ? " / " : "") + regions.names[k];
+      const double begin = k ? regions.ends[k - 1] : 0;
+      bands += (k ? ", " : "") + Format("%.0f", 100 * begin) + "–" +
+               Format("%.0f", 100 * regions.ends[k]) + " %";
+    }
+    auto percents = [](const std::vector<double>& values) {
+      std::string out;
+      for (size_t k = 0; k < values.size(); ++k)
+        out += (k ? " / " : "") + Format("%.1f", 100 * values[k]);
+      return out + " %";
+    };
+    md << "Load split " << names << " (" << bands << " of the length from the "
+       << (IsShoe(s) ? "heel" : "start") << "): " << percents(before) << " on the initial design"
+       << (after.empty() ? std::string() : ", " + percents(after) + " on the optimised one")
+       << "; centre of pressure at "
+       << Format("%.1f", 100 * CentreFraction(s, s.initial.centre_of_pressure)) << " % of the "
+       << "length (initial).\n\n";
   }
   if (!s.checks.empty()) {
     md << "Placement checks (the body placed afresh off the pose the optimiser saw; reduction "
