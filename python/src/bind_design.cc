@@ -7,6 +7,7 @@
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
+#include "ergo/design/lengthwise_shares.h"
 #include "ergo/mesh/input_error.h"
 #include "python/src/bindings.h"
 #include "python/src/body_handle.h"
@@ -267,15 +268,31 @@ void BindDesign(py::module_& m) {
               evaluation = h.problem->Evaluate(x, gradient);
             }
             interrupt.RaiseIfInterrupted();
-            return EvaluationDict(evaluation, gradient);
+            py::dict d = EvaluationDict(evaluation, gradient);
+            // The load's split along the scenario's regions (the shoe: rearfoot, midfoot,
+            // forefoot from the heel), as summary.json's region_shares.
+            const LengthRegions& regions = h.scenario->regions;
+            if (evaluation.ok && !regions.names.empty()) {
+              const std::vector<double> shares =
+                  ComputeLengthwiseShares(h.problem->body(), evaluation.pressures.contacts,
+                                          regions.ends, regions.from_min_z)
+                      .shares;
+              py::dict named;
+              for (size_t k = 0; k < shares.size(); ++k)
+                named[py::str(regions.names[k])] = shares[k];
+              d["region_shares"] = named;
+            }
+            return d;
           },
           py::arg("x"), py::arg("gradient") = true,
           "A dict: ok, message, phi, zeta, psi, zeta_skin, zeta_support, gradient (dφ/dx), "
           "zeta_gradient, psi_gradient, contact_vertices, skin_pressure, support_pressure, "
           "peak_pressure, seconds, timing (where the seconds went: support_s, placement_s, "
           "contact_s, assembly_s, factorization_s, solve_s, line_search_s, adjoint_s, ..., "
-          "other_s, and the counts factorizations, pcg_iterations, ...). An equilibrium that "
-          "fails is ok=False (never NaN).")
+          "other_s, and the counts factorizations, pcg_iterations, ...); for the shoe "
+          "region_shares {rearfoot, midfoot, forefoot}: the load's split below 30 %, 30-60 % "
+          "and from 60 % of the foot's length from the heel. An equilibrium that fails is "
+          "ok=False (never NaN).")
       .def(
           "support_at",
           [](const ProblemHandle& h, const Eigen::VectorXd& x) {
