@@ -22,6 +22,21 @@ def save(fig, path):
     os.replace(tmp, path)
 
 
+def mark_regions(ax, regions, share_key):
+    """The scenario's bands along the map's second axis (the shoe: rearfoot, midfoot,
+    forefoot), dashed at their inner ends, each labelled with its share of the load."""
+    if not regions:
+        return
+    ends = sorted({round(b[e] * 1e3, 6) for b in regions for e in ("v_from", "v_to")})
+    for v in ends[1:-1]:
+        ax.axhline(v, color="0.6", linestyle="--", linewidth=0.8)
+    for band in regions:
+        share = band.get(share_key)
+        label = band["name"] + ("" if share is None else " %.0f %%" % (100 * share))
+        ax.text(1.02, (band["v_from"] + band["v_to"]) / 2 * 1e3, label, rotation=90,
+                va="center", ha="left", fontsize=8, transform=ax.get_yaxis_transform())
+
+
 def pressure_maps(plt, data, out_dir):
     initial, optimized = data["initial"]["skin"], data["optimized"]["skin"]
     top = max(max(initial["pressure"] or [0]), max(optimized["pressure"] or [0]), 1e-12) / 1e3
@@ -33,6 +48,7 @@ def pressure_maps(plt, data, out_dir):
         if skin["triangles"]:
             mesh = ax.tripcolor(u, v, skin["triangles"], kpa, shading="gouraud", cmap="inferno", vmin=0, vmax=top)
         ax.set_title("%s: peak %.2f kPa" % (title, max(kpa or [0])))
+        mark_regions(ax, data.get("regions"), "initial_share" if title == "initial" else "optimized_share")
         ax.set_aspect("equal")
         ax.set_xlabel(data["view"]["axes"][0] + " (mm)")
         ax.set_ylabel(data["view"]["axes"][1] + " (mm)")

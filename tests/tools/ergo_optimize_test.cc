@@ -230,6 +230,16 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   EXPECT_GT(fore, 0.2);
   EXPECT_NE(Read(dir + "/summary.md").find("Load split rearfoot / midfoot / forefoot"),
             std::string::npos);
+  // The pressure maps mark the same bands: contiguous along z from the heel, carrying the
+  // summary's shares.
+  const Json plot = ReadJsonFile(dir + "/plot_data.json");
+  const Json& bands = GetMember(plot, "regions", "plot_data");
+  ASSERT_EQ(bands.size(), 3u);
+  EXPECT_EQ(bands[0]["name"].get<std::string>(), "rearfoot");
+  for (size_t k = 1; k < bands.size(); ++k)
+    EXPECT_EQ(bands[k]["v_from"].get<double>(), bands[k - 1]["v_to"].get<double>());
+  EXPECT_LT(bands[0]["v_from"].get<double>(), bands[2]["v_to"].get<double>());
+  EXPECT_EQ(bands[0]["initial_share"].get<double>(), rear);
   // The headline is the body placed afresh: the kept design must beat the flat sole there.
   EXPECT_TRUE(GetBool(summary, "fresh_placement_converged", "summary"));
   EXPECT_GE(GetNumber(summary, "reduction_percent", "summary"), 20.0) << Read(dir + ".log");

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "ergo/design/equilibrium_report.h"
+#include "ergo/design/lengthwise_shares.h"
 #include "ergo/ergonomics/pressure_statistics.h"
 #include "ergo/mesh/mesh_io.h"
 
@@ -151,6 +152,35 @@ Json PlotData(const Scenario& scenario, const DesignReport& initial,
     Json entry = Json::object();
     entry["skin"] = SkinView(body, *report, view);
     data[name] = entry;
+  }
+  // The scenario's regions along z (the shoe's rearfoot, midfoot, forefoot) when the map's
+  // second axis is z: each band's extent on that axis (the rest foot's, m) and its share of
+  // the load on each design, for the maps to mark.
+  const LengthRegions& regions = scenario.regions;
+  if (!regions.names.empty() && view.v_name == std::string("z") && view.v.z() > 0) {
+    const Vertices& rest = body.rest().vertices;
+    const double min_z = rest.col(2).minCoeff(), extent = rest.col(2).maxCoeff() - min_z;
+    auto at = [&](double fraction) {
+      return min_z + extent * (regions.from_min_z ? fraction : 1 - fraction);
+    };
+    auto shares = [&](const DesignReport& report) {
+      return report.evaluation.ok ? ComputeLengthwiseShares(body, report.pressures.contacts,
+                                                            regions.ends, regions.from_min_z)
+                                        .shares
+                                  : std::vector<double>();
+    };
+    const std::vector<double> before = shares(initial), after = shares(optimized);
+    Json bands = Json::array();
+    for (size_t k = 0; k < regions.names.size(); ++k) {
+      Json band = Json::object();
+      band["name"] = regions.names[k];
+      band["v_from"] = at(k ? regions.ends[k - 1] : 0);
+      band["v_to"] = at(regions.ends[k]);
+      band["initial_share"] = k < before.size() ? Json(before[k]) : Json();
+      band["optimized_share"] = k < after.size() ? Json(after[k]) : Json();
+      bands.push_back(band);
+    }
+    data["regions"] = bands;
   }
   // The designed region: support triangles whose corners are all active.
   const std::vector<bool>& active = scenario.design.active;
