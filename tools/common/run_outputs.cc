@@ -76,7 +76,7 @@ Json SkinView(const LayeredBody& body, const DesignReport& report, const View& v
 }  // namespace
 
 DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorXd& x,
-                              DesignEvaluation evaluation) {
+                              DesignEvaluation evaluation, const LengthRegions& regions) {
   DesignReport report;
   report.x = x;
   report.support = problem.SupportAt(x);
@@ -89,11 +89,17 @@ DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorX
   report.skin_contact_area = skin.contact_area;
   report.centre_of_pressure = ComputeCentreOfPressure(
       problem.body(), report.evaluation.equilibrium.state, report.pressures.contacts);
+  if (!regions.names.empty()) {
+    report.region_shares = ComputeLengthwiseShares(problem.body(), report.pressures.contacts,
+                                                   regions.ends, regions.from_min_z)
+                               .shares;
+  }
   return report;
 }
 
-DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x) {
-  return ReportEvaluation(problem, x, problem.Evaluate(x, false));
+DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x,
+                          const LengthRegions& regions) {
+  return ReportEvaluation(problem, x, problem.Evaluate(x, false), regions);
 }
 
 void WriteDesignVtus(const std::string& dir, const std::string& tag, const LayeredBody& body,
@@ -163,13 +169,7 @@ Json PlotData(const Scenario& scenario, const DesignReport& initial,
     auto at = [&](double fraction) {
       return min_z + extent * (regions.from_min_z ? fraction : 1 - fraction);
     };
-    auto shares = [&](const DesignReport& report) {
-      return report.evaluation.ok ? ComputeLengthwiseShares(body, report.pressures.contacts,
-                                                            regions.ends, regions.from_min_z)
-                                        .shares
-                                  : std::vector<double>();
-    };
-    const std::vector<double> before = shares(initial), after = shares(optimized);
+    const std::vector<double>&before = initial.region_shares, &after = optimized.region_shares;
     Json bands = Json::array();
     for (size_t k = 0; k < regions.names.size(); ++k) {
       Json band = Json::object();

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -27,14 +28,19 @@ struct DesignReport {
   double peak_pressure = 0;             // skin side, Pa
   double skin_contact_area = 0;         // Σ rest areas of skin vertices in contact, m²
   CentreOfPressure centre_of_pressure;  // of the skin's contact forces (centre_of_pressure.h)
+  // The load's split over the scenario's regions (lengthwise_shares.h), one share per region;
+  // empty without regions, equilibrium or contact.
+  std::vector<double> region_shares;
 };
 
 // Evaluates `x` on `problem` (φ only) and gathers its pressures. evaluation.ok tells
 // whether the equilibrium converged.
-DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x);
+// `regions`: the scenario's, for region_shares (none: no split).
+DesignReport ReportDesign(DesignProblem& problem, const Eigen::VectorXd& x,
+                          const LengthRegions& regions = {});
 // The report of an evaluation already made of `x` on `problem`.
 DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorXd& x,
-                              DesignEvaluation evaluation);
+                              DesignEvaluation evaluation, const LengthRegions& regions = {});
 
 // DIR/body_TAG.vtu and DIR/support_TAG.vtu (pressures; the support's displacement from
 // `initial_support`), in `vtu_encoding`. A soft support's surface is written deformed, and its

@@ -256,7 +256,7 @@ int Run() {
   summary.gamma = gamma;
   DesignEvaluation initial_evaluation = first;
   initial_evaluation.phi = first.zeta + gamma * first.psi;  // φ with the γ just chosen
-  summary.initial = ReportEvaluation(fresh, x0, std::move(initial_evaluation));
+  summary.initial = ReportEvaluation(fresh, x0, std::move(initial_evaluation), scenario.regions);
   const DesignEvaluation& initial = summary.initial.evaluation;
   const double phi0 = initial.phi;
   std::cout << "  initial φ " << phi0 << " (ζ " << initial.zeta << ": skin " << initial.zeta_human
@@ -390,10 +390,10 @@ int Run() {
 
   // The kept design placed afresh (the headline), and on the optimiser's own path.
   Eigen::VectorXd kept = rounds.kept_x;
-  summary.optimized = ReportDesign(fresh, kept);
+  summary.optimized = ReportDesign(fresh, kept, scenario.regions);
   if (FLAGS_post_smoothing > 0 && summary.optimized.evaluation.ok && !StopOnSignals::stopped()) {
     const Eigen::VectorXd smoothed_x = PostSmooth(problem, kept, FLAGS_post_smoothing);
-    DesignReport smoothed = ReportDesign(fresh, smoothed_x);
+    DesignReport smoothed = ReportDesign(fresh, smoothed_x, scenario.regions);
     const bool better =
         smoothed.evaluation.ok && smoothed.evaluation.phi < summary.optimized.evaluation.phi;
     std::ostringstream line;

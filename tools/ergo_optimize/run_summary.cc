@@ -9,7 +9,6 @@
 #include <Eigen/Geometry>
 
 #include "ergo/design/evaluation_timing.h"
-#include "ergo/design/lengthwise_shares.h"
 
 namespace ergo {
 namespace {
@@ -52,16 +51,6 @@ Json ThreeWay(double initial, double followed, double fresh) {
 }
 
 bool IsShoe(const RunSummary& s) { return s.scenario->name == "shoe"; }
-
-// The load's split along the scenario's regions (the shoe: rearfoot, midfoot, forefoot from
-// the heel) on one placed design; empty without regions, contact or equilibrium.
-std::vector<double> RegionShares(const RunSummary& s, const DesignReport& report) {
-  const LengthRegions& regions = s.scenario->regions;
-  if (regions.names.empty() || !report.evaluation.ok) return {};
-  return ComputeLengthwiseShares(*s.scenario->body, report.pressures.contacts, regions.ends,
-                                 regions.from_min_z)
-      .shares;
-}
 
 // The centre of pressure's fraction of the length from the regions' start (the heel).
 double CentreFraction(const RunSummary& s, const CentreOfPressure& c) {
@@ -133,7 +122,7 @@ Json SummaryJson(const RunSummary& s) {
   const LengthRegions& regions = scenario.regions;
   if (!regions.names.empty()) {
     auto shares = [&](const DesignReport& report) {
-      const std::vector<double> values = RegionShares(s, report);
+      const std::vector<double>& values = report.region_shares;
       if (values.empty()) return Json();
       Json out = Json::object();
       for (size_t k = 0; k < values.size(); ++k) out[regions.names[k]] = values[k];
@@ -287,8 +276,7 @@ std::string SummaryMarkdown(const RunSummary& s) {
        << (met ? "met" : "not met") << " — peak " << Format("%.1f", s.optimized.peak_pressure / 1e3)
        << " kPa, " << Format("%.1f", relief) << " % below the flat sole.\n\n";
   }
-  const std::vector<double> before = RegionShares(s, s.initial),
-                            after = RegionShares(s, s.optimized);
+  const std::vector<double>&before = s.initial.region_shares, &after = s.optimized.region_shares;
   if (!before.empty()) {
     const LengthRegions& regions = s.scenario->regions;
     std::string names, bands;
