@@ -161,6 +161,97 @@ TEST_F(ToolsSimulate, MaxSecondsStopsCleanlyWithExitOneAndWritesNothing) {
   EXPECT_NE(bad.output.find("--max_seconds"), std::string::npos) << bad.output;
 }
 
+// --load_point: the whole load's line of action at a fraction of the body's length from its
+// heel end, as a torque on the core. For the ball (its centre of mass at its core's centre) the
+// torque is τ = (P − C) × (−W ŷ) = (Δz W, 0, 0), Δz = (0.3 − 0.5) × 0.1 m; its rotations are
+// locked, so the lock carries it. 1.5 %: the meshed sphere's extent along z falls short of its
+// 0.1 m diameter by 0.6 %, and its centre of mass lies off the core's centre by a few tenths of a
+// millimetre (the (G − C) × Mg term, the sum of the two ends' torques below: 0.6 % of one).
+// Turned end for end (--heel_end=max_z) the torque changes sign. A ball has no ankle, so
+// without --heel_end the heel end is refused, naming the flag.
+TEST_F(ToolsSimulate, LoadPointIsTheWholeLoadThroughTheStatedPoint) {
+  double torque[2] = {0, 0};
+  double weight = 0;
+  const char* ends[2] = {"min_z", "max_z"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = std::string("load_point_") + ends[k];
+    const CommandResult run = RunCommand(Simulate(
+        "--contact_stiffness=1e8 --load_point=0.3 --heel_end=" + std::string(ends[k]), out));
+    ASSERT_EQ(run.status, 0) << run.output;
+    const Json summary = ReadJsonFile(*dir_ + "/" + out + "/summary.json");
+    const Json& load = GetMember(summary, "load_point", "summary");
+    EXPECT_EQ(GetNumber(load, "fraction", "load_point"), 0.3);
+    EXPECT_EQ(GetString(load, "heel_end", "load_point"), ends[k]);
+    torque[k] = GetMember(load, "external_torque_Nm", "load_point").at(0).get<double>();
+    weight = -GetMember(summary, "load_N", "summary").at(1).get<double>();
+    // A plain body without --regions says nothing of a foot's split.
+    EXPECT_EQ(FindMember(summary, "region_shares"), nullptr);
+  }
+  ASSERT_GT(weight, 0);
+  EXPECT_NEAR(torque[0], -0.2 * 0.1 * weight, 0.015 * 0.02 * weight);
+  EXPECT_NEAR(torque[1], 0.2 * 0.1 * weight, 0.015 * 0.02 * weight);
+  EXPECT_LT(std::abs(torque[0] + torque[1]), 0.015 * 0.02 * weight);
+
+  const CommandResult no_ankle = RunCommand(Simulate("--load_point=0.3", "no_ankle"));
+  EXPECT_EQ(no_ankle.status, 2) << no_ankle.output;
+  EXPECT_NE(no_ankle.output.find("--heel_end"), std::string::npos) << no_ankle.output;
+  for (const char* bad :
+       {"--load_point=1.2", "--load_point=heel", "--regions=hand", "--heel_end=top"}) {
+    const CommandResult refused = RunCommand(Simulate(bad, "bad_length"));
+    EXPECT_EQ(refused.status, 2) << bad << ": " << refused.output;
+    const std::string flag = std::string(bad).substr(0, std::string(bad).find('='));
+    EXPECT_NE(refused.output.find(flag), std::string::npos) << refused.output;
+  }
+}
+
+// A body built with --anatomy=foot records its anatomy and landmarks in body.json; ergo_simulate
+// then reports the load's split along the length from the heel the landmarks name, as
+// ergo_optimize does for the shoe. Here the ball's record is edited to say it is a foot with its
+// heel at +z: the split comes with heel_end max_z, its shares sum to 1, and the centre of
+// pressure's fraction from the heel is 1 minus its fraction from the smallest z. The ball's
+// centre of pressure lies at its middle (0.5; 0.01 covers the mesh's asymmetry, measured 0.498).
+TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
+  const std::string foot = *dir_ + "/ball_foot";
+  fs::copy(*dir_ + "/ball", foot,
+           fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  Json record = ReadJsonFile(foot + "/body.json");
+  record["source"]["anatomy"] = "foot";
+  record["source"]["landmarks"] =
+      Json::array({Json{{"name", "heel"}, {"point_m", {0.0, -0.05, 0.04}}},
+                   Json{{"name", "toe tip"}, {"point_m", {0.0, -0.04, -0.05}}}});
+  WriteJsonFile(foot + "/body.json", record);
+  const CommandResult run = RunCommand(
+      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + foot + " --support=" + *dir_ +
+      "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
+      "--out=" +
+      *dir_ + "/foot_split");
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("load split rearfoot / midfoot / forefoot"), std::string::npos)
+      << run.output;
+  const Json summary = ReadJsonFile(*dir_ + "/foot_split/summary.json");
+  const Json& split = GetMember(summary, "region_shares", "summary");
+  EXPECT_EQ(GetString(split, "heel_end", "region_shares"), "max_z");
+  const Json& shares = GetMember(split, "shares", "region_shares");
+  double sum = 0;
+  for (const char* name : {"rearfoot", "midfoot", "forefoot"}) {
+    const double share = GetNumber(shares, name, "shares");
+    EXPECT_GE(share, 0) << name;
+    sum += share;
+  }
+  EXPECT_NEAR(sum, 1, 1e-12);
+  const double from_heel = GetNumber(summary, "centre_of_pressure_heel_fraction", "summary");
+  EXPECT_NEAR(from_heel, 1 - GetNumber(summary, "centre_of_pressure_z_fraction", "summary"), 1e-12);
+  EXPECT_NEAR(from_heel, 0.5, 0.01);
+  // --regions=none keeps it out.
+  const CommandResult quiet = RunCommand(
+      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + foot + " --support=" + *dir_ +
+      "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
+      "--regions=none --out=" +
+      *dir_ + "/foot_quiet");
+  ASSERT_EQ(quiet.status, 0) << quiet.output;
+  EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/summary.json"), "region_shares"), nullptr);
+}
+
 // The slab as foam (--support_model=soft): Mesh_3 of the slab, its bottom held; the ball sinks
 // into it, the base carries the load, and the deformed solid with its stress is written. A
 // user's tet mesh of the slab (--support_tets, millimetres) gives the same kind of run; bad

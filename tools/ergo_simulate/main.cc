@@ -3,7 +3,8 @@
 // §3.3–3.5). Writes OUT/body_deformed.vtu, OUT/support.vtu and OUT/summary.json, as one unit
 // (a killed run leaves the previous OUT or none). The work is SolveStaticEquilibrium
 // (ergo/design/static_equilibrium.h); its progress (placement, calibration steps, Newton
-// iterations, elapsed time) goes to stderr unless --progress=false.
+// iterations, elapsed time) goes to stderr unless --progress=false. --load_point and --regions
+// read the body along its length as ergo_optimize reads the shoe's foot (length_reading.h).
 // Exit status: 0 converged with the stiffness asked for, 1 the computation did not succeed
 // (not converged, no contact, stiffness calibration failed: the summary says why; or
 // --max_seconds ran out: nothing written), 2 unusable input, 130 / 143 interrupted (nothing
@@ -34,6 +35,7 @@
 #include "tools/common/run_signals.h"
 #include "tools/common/soft_support_flags.h"
 #include "tools/common/vtu_flags.h"
+#include "tools/ergo_simulate/length_reading.h"
 
 DEFINE_string(body, "", "body directory written by `ergo_body build` (required)");
 DEFINE_string(support, "",
@@ -134,6 +136,7 @@ int Run() {
   if (FLAGS_place != "auto" && FLAGS_place != "none")
     throw InputError("--place", "", "'" + FLAGS_place + "'", "use auto or none");
   const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
+  LengthReading length_reading = ParseLengthFlags();
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
 
   LayeredBodyOptions scenario;
@@ -149,7 +152,9 @@ int Run() {
   }
   StopOnSignals signals;
   OutputDirectory output(FLAGS_out, "--out");  // writable, checked before any work
-  const LayeredBody body = LoadLayeredBody(FLAGS_body, scenario);
+  LayeredBody body = LoadLayeredBody(FLAGS_body, scenario);
+  ResolveLengthReading(FLAGS_body, body, &length_reading);
+  ApplyLoadPoint(length_reading, &body);
   TriMesh support_mesh =
       FLAGS_support.empty() ? TriMesh{} : ReadTriMesh(FLAGS_support, ReadOptions{unit});
   const std::string support_source = FLAGS_support.empty() ? SoftSupportTetFile() : FLAGS_support;
@@ -226,6 +231,9 @@ int Run() {
                     vtu_encoding);
   }
   Json summary = solved.summary;
+  const std::string length_line =
+      ReportLengthReading(length_reading, body, result.state, solved.pressures.contacts, &summary);
+  if (!length_line.empty()) std::cout << length_line << "\n";
   summary["body_directory"] = FLAGS_body;
   summary["support_file"] = support_source;
   summary["support_model"] = DescribeSoftSupportFlags();
@@ -259,7 +267,8 @@ int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "static contact equilibrium of a body on a support\n"
       "  ergo_simulate --body=DIR --support=FILE [--unit=mm] [--external_force=FX,FY,FZ]\n"
-      "    [--external_torque=TX,TY,TZ] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto]\n"
+      "    [--external_torque=TX,TY,TZ] [--load_point=F [--heel_end=min_z|max_z]]\n"
+      "    [--regions=auto|foot|none] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto]\n"
       "    [--support_model=soft [--support_youngs_modulus=PA] [--support_tets=FILE]] --out=OUT");
   try {
     ergo::CheckCommandLine(argc, argv);

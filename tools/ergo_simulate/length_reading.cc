@@ -1,0 +1,118 @@
+#include "tools/ergo_simulate/length_reading.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#include <gflags/gflags.h>
+
+#include "ergo/body/body_directory.h"
+#include "ergo/body/recorded_anatomy.h"
+#include "ergo/design/centre_of_pressure.h"
+#include "ergo/design/lengthwise_shares.h"
+#include "ergo/mesh/input_error.h"
+#include "problems/load_point.h"
+
+DEFINE_string(load_point, "none",
+              "the whole load's line of action through the point at this fraction of the "
+              "body's length from its heel (back) end, across at the core's centre, made a "
+              "torque on the core and added to --external_torque (0.445: a foot in quiet "
+              "standing, as ergo_optimize's shoe); none");
+DEFINE_string(heel_end, "auto",
+              "the end of z the length runs from, for --load_point and --regions: min_z, "
+              "max_z, or auto (the body's landmarks when it was built with --anatomy=foot, "
+              "else the end whose quarter reaches higher, the ankle)");
+DEFINE_string(regions, "auto",
+              "the load's split along the length in summary.json: foot (rearfoot, midfoot, "
+              "forefoot: below 30 %, 30-60 % and from 60 % of the length from the heel), "
+              "none, or auto (foot for a body built with --anatomy=foot)");
+
+namespace ergo {
+
+LengthReading ParseLengthFlags() {
+  LengthReading reading;
+  if (FLAGS_load_point != "none") {
+    char* end = nullptr;
+    const double value = std::strtod(FLAGS_load_point.c_str(), &end);
+    if (end == FLAGS_load_point.c_str() || *end != '\0' || !(value >= 0 && value <= 1)) {
+      throw InputError("--load_point", "",
+                       "'" + FLAGS_load_point + "' is neither a fraction in [0, 1] nor none",
+                       "e.g. 0.445 (a foot in quiet standing)");
+    }
+    reading.load_point = value;
+  }
+  if (FLAGS_regions != "auto" && FLAGS_regions != "foot" && FLAGS_regions != "none") {
+    throw InputError("--regions", "", "'" + FLAGS_regions + "' is not foot, none or auto",
+                     "use --regions=foot, none or auto");
+  }
+  reading.foot_regions = FLAGS_regions == "foot";
+  reading.auto_regions = FLAGS_regions == "auto";
+  reading.heel_end = ParseHeelEnd(FLAGS_heel_end, "--heel_end");
+  return reading;
+}
+
+void ResolveLengthReading(const std::string& body_dir, const LayeredBody& body,
+                          LengthReading* reading) {
+  const std::string record = (std::filesystem::path(body_dir) / kBodyJsonFile).string();
+  const RecordedAnatomy recorded =
+      ReadRecordedAnatomy(GetMember(ReadJsonFile(record), "source", record), record);
+  if (reading->auto_regions) reading->foot_regions = recorded.anatomy == Anatomy::kFoot;
+  if (reading->load_point || reading->foot_regions) {
+    const HeelEnd end = reading->heel_end != HeelEnd::kAuto
+                            ? reading->heel_end
+                            : recorded.heel_end.value_or(HeelEnd::kAuto);
+    reading->heel_at_min_z = HeelAtMinZ(body.rest().vertices, end, "--heel_end");
+  }
+}
+
+void ApplyLoadPoint(const LengthReading& reading, LayeredBody* body) {
+  if (!reading.load_point) return;
+  const Eigen::Vector3d force = body->options().external_force;
+  const Eigen::Vector3d torque =
+      body->options().external_torque +
+      LoadPointTorque(*body, force, *reading.load_point,
+                      reading.heel_at_min_z ? HeelEnd::kMinZ : HeelEnd::kMaxZ, "--load_point");
+  body->SetExternalWrench(force, torque);
+}
+
+std::string ReportLengthReading(const LengthReading& reading, const LayeredBody& body,
+                                const BodyState& state, const SurfaceContacts& contacts,
+                                Json* summary) {
+  const char* heel_end = reading.heel_at_min_z ? "min_z" : "max_z";
+  if (reading.load_point) {
+    const Eigen::Vector3d& torque = body.options().external_torque;
+    Json load = Json::object();
+    load["fraction"] = *reading.load_point;
+    load["heel_end"] = heel_end;
+    load["external_torque_Nm"] = Json::array({torque.x(), torque.y(), torque.z()});
+    (*summary)["load_point"] = load;
+  }
+  if (!reading.foot_regions) return "";
+  const std::vector<double> ends = FootRegionEnds();
+  const LengthwiseShares split =
+      ComputeLengthwiseShares(body, contacts, ends, reading.heel_at_min_z);
+  if (split.shares.empty()) return "";
+  const char* names[] = {"rearfoot", "midfoot", "forefoot"};
+  Json shares = Json::object();
+  for (size_t k = 0; k < split.shares.size(); ++k) shares[names[k]] = split.shares[k];
+  Json regions = Json::object();
+  regions["ends"] = Json::array({ends[0], ends[1], ends[2]});
+  regions["heel_end"] = heel_end;
+  regions["shares"] = shares;
+  (*summary)["region_shares"] = regions;
+  const CentreOfPressure cop = ComputeCentreOfPressure(body, state, contacts);
+  const double from_heel = reading.heel_at_min_z ? cop.z_fraction : 1 - cop.z_fraction;
+  (*summary)["centre_of_pressure_heel_fraction"] = from_heel;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "load split rearfoot / midfoot / forefoot (0-30 %%, 30-60 %%, 60-100 %% of the "
+                "length from the heel): %.1f / %.1f / %.1f %%; centre of pressure at %.1f %% "
+                "of the length",
+                100 * split.shares[0], 100 * split.shares[1], 100 * split.shares[2],
+                100 * from_heel);
+  return line;
+}
+
+}  // namespace ergo
