@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -162,7 +164,11 @@ TEST(Problems, ScannedFootWithAnatomicalPriorsStandsWithItsCentreOfPressureAtThe
   const std::string dir = testing::RealScanDir();
   if (dir.empty()) GTEST_SKIP() << "../shared/real-scans is not present";
   ShoeScenarioOptions options = ShoeScenarioOptions::FromPreset("quick");
-  options.user_body.skin_surface = dir + "/foot_find_template.obj";
+  // ERGO_SCAN_FILE: another scan in the same axes, e.g. a posed copy (tools/pose_foot_scan.py,
+  // README "Scans": the standing-pose table).
+  const char* scan_file = std::getenv("ERGO_SCAN_FILE");
+  options.user_body.skin_surface =
+      scan_file != nullptr ? std::string(scan_file) : dir + "/foot_find_template.obj";
   options.user_body.axes = "y,z,x";
   options.user_body.anatomy.anatomy = Anatomy::kFoot;
   options.user_body.edge_length = 0.008;  // 10 mm pinches the skin between the toes
@@ -173,7 +179,15 @@ TEST(Problems, ScannedFootWithAnatomicalPriorsStandsWithItsCentreOfPressureAtThe
   EquilibriumSolver solver(*scenario.body, scenario.design.equilibrium);
   // Level as scanned, then rolled about the length towards pronation (+x, the lateral side,
   // up): the shares at each roll are the README's measurement.
-  for (double degrees : {0.0, 6.0, 11.5, 15.0}) {
+  // ERGO_SCAN_ROLLS: other rolls, in degrees separated by spaces (e.g. "0 2 4").
+  std::vector<double> rolls = {0.0, 6.0, 11.5, 15.0};
+  if (const char* text = std::getenv("ERGO_SCAN_ROLLS")) {
+    rolls.clear();
+    std::istringstream in(text);
+    for (double degrees; in >> degrees;) rolls.push_back(degrees);
+    ASSERT_FALSE(rolls.empty()) << "ERGO_SCAN_ROLLS='" << text << "' holds no number";
+  }
+  for (double degrees : rolls) {
     const BodyState start = StartAbove(
         *scenario.body, RolledRestState(*scenario.body, degrees * RollBalanceOptions::kDegree),
         scenario.support, options.start_gap, "scan");

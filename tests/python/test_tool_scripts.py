@@ -121,3 +121,76 @@ def test_compare_names_a_directory_that_is_not_a_run(source_dir, tmp_path):
     assert completed.returncode == 1
     assert "empty has no support_initial.ply" in completed.stderr
     assert "Traceback" not in completed.stderr
+
+
+def run_pose(source_dir, *args):
+    return subprocess.run(
+        [sys.executable, str(source_dir / "tools" / "pose_foot_scan.py"), *map(str, args)],
+        capture_output=True, text=True, timeout=60)
+
+
+def read_obj(path):
+    lines = path.read_text().split("\n")
+    vertices = np.array([[float(t) for t in l.split()[1:4]] for l in lines if l.startswith("v ")])
+    faces = [l for l in lines if l.startswith("f ")]
+    return vertices, faces
+
+
+def test_pose_foot_scan_turns_each_part_by_its_angle_about_its_axis(source_dir, tmp_path):
+    # A foot-sized cloud in the scan's axes (z up, length along x, as the FIND foot: --axes=y,z,x)
+    # with two faces that must survive. In ergo's frame it spans x 0..0.1, y 0..0.05,
+    # z 0..0.25 (the length).
+    rng = np.random.default_rng(7)
+    ergo = rng.uniform([0, 0, 0], [0.1, 0.05, 0.25], size=(400, 3))
+    ergo[0], ergo[1] = [0, 0, 0], [0.1, 0.05, 0.25]  # the extent's corners
+    scan = ergo[:, [2, 0, 1]]  # scan x = ergo z, scan y = ergo x, scan z = ergo y
+    source = tmp_path / "foot.obj"
+    source.write_text("# a cloud\n" + "".join(f"v {x!r} {y!r} {z!r}\n" for x, y, z in scan)
+                      + "f 1 2 3\nf 2 3 4\n")
+    same = run_pose(source_dir, source, tmp_path / "same.obj", "--axes=y,z,x")
+    assert same.returncode == 0, same.stderr
+    vertices, faces = read_obj(tmp_path / "same.obj")
+    assert np.abs(vertices - scan).max() == 0
+    assert faces == ["f 1 2 3", "f 2 3 4"]
+
+    done = run_pose(source_dir, source, tmp_path / "posed.obj", "--axes=y,z,x",
+                    "--forefoot_eversion=10", "--toe_flexion=20")
+    assert done.returncode == 0, done.stderr
+    posed = read_obj(tmp_path / "posed.obj")[0][:, [1, 2, 0]]  # back to ergo's frame
+    s = ergo[:, 2] / 0.25
+    # Behind the forefoot's ramp nothing moves; within it each point keeps its distance to the
+    # eversion axis (x 0.05, y 0.025, along z), since only a turn about that axis moves it.
+    behind = s <= 0.35
+    assert behind.sum() > 50
+    assert np.abs(posed[behind] - ergo[behind]).max() == 0
+    ramp = (s > 0.35) & (s < 0.65)
+    axis = np.array([0.05, 0.025])
+    assert np.allclose(np.linalg.norm(posed[ramp, :2] - axis, axis=1),
+                       np.linalg.norm(ergo[ramp, :2] - axis, axis=1), atol=1e-15)
+    # From 65 % to the toes' root (72 %) the forefoot is turned by the full 10 degrees: a point
+    # on the -x side goes down, and the turn is exactly R(10°) about the axis.
+    full = (s >= 0.65) & (s <= 0.72)
+    c, d = np.cos(np.radians(10)), np.sin(np.radians(10))
+    rel = ergo[full, :2] - axis
+    expected = np.column_stack([c * rel[:, 0] - d * rel[:, 1], d * rel[:, 0] + c * rel[:, 1]])
+    assert np.allclose(posed[full, :2] - axis, expected, atol=1e-15)
+    assert np.allclose(posed[full, 2], ergo[full, 2], atol=1e-15)
+    # Beyond 80 % the toes are turned down by 20 degrees about x through (y 0.015, z 0.18),
+    # after the eversion: the distance to that axis is kept and a tip ahead of it goes down.
+    toes = s >= 0.80
+    everted = ergo[toes].copy()
+    rel = everted[:, :2] - axis
+    everted[:, :2] = axis + np.column_stack([c * rel[:, 0] - d * rel[:, 1],
+                                             d * rel[:, 0] + c * rel[:, 1]])
+    pivot = np.array([0.015, 0.18])  # y, z
+    c, d = np.cos(np.radians(20)), np.sin(np.radians(20))
+    rel = everted[:, 1:] - pivot
+    expected = pivot + np.column_stack([c * rel[:, 0] - d * rel[:, 1], d * rel[:, 0] + c * rel[:, 1]])
+    assert np.allclose(posed[toes, 1:], expected, atol=1e-15)
+    assert np.allclose(posed[toes, 0], everted[:, 0], atol=1e-15)
+    tip = np.argmax(ergo[:, 2])
+    assert posed[tip, 1] < ergo[tip, 1] - 0.01
+
+    bad = run_pose(source_dir, source, tmp_path / "bad.obj", "--axes=y,y,x")
+    assert bad.returncode != 0 and "--axes=y,y,x" in bad.stderr
+    assert not (tmp_path / "bad.obj").exists()
