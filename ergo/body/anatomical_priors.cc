@@ -465,6 +465,17 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
             << (foot.medial_sign > 0 ? "+x" : "-x") << ", ball at " << std::round(100 * foot.ball_s)
             << " % of the length, the core cut at " << std::round(100 * (foot.ball_s + kToeCrease))
             << " % (the toes are tissue)";
+    priors.toe_clearance = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < v.rows(); ++i) {
+      const Eigen::Vector3d p = v.row(i).transpose();
+      if (foot.CoreLimit(p) > 0)
+        priors.toe_clearance =
+            std::min(priors.toe_clearance, p.y() - foot.FloorAt(foot.frame.Along(p)));
+    }
+    if (!std::isfinite(priors.toe_clearance)) priors.toe_clearance = 0;
+    summary << ", the toes' lowest skin " << std::round(10e3 * priors.toe_clearance) / 10
+            << " mm above the line the heel and the ball stand on"
+            << (priors.toe_clearance > 0.005 ? " (toes held up: standing, they carry load)" : "");
   } else if (options.anatomy == Anatomy::kSeat) {
     const SeatModel seat = DetectSeat(v, normals, source, &priors.landmarks);
     prior = [seat](const Eigen::Vector3d& p, const Eigen::Vector3d& n) { return seat.At(p, n); };

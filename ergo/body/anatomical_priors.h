@@ -67,6 +67,12 @@ struct AnatomicalPriors {
   // wrist to fingertips), m, and where it starts: the z of the heel / back / wrist end and
   // the direction of increasing length (+1 or −1 along z).
   double length = 0, start_z = 0, length_direction = 1;
+  // Foot: how high its toes stand, m: the least height of the skin past the core's cut above
+  // the weight-bearing line (through the heel's and the ball's lowest skin). A standing
+  // foot's toes rest on the floor; a scan of a foot at rest lifts them (the FIND template:
+  // 10.7 mm), and they then carry nothing (README "Scans"). Above 5 mm (a choice) the summary
+  // says they are held up. 0 for the other anatomies.
+  double toe_clearance = 0;
   std::string summary;  // one paragraph for people: the frame, the landmarks, the ranges
   // Where the part has no bones, the core is cut away: a signed implicit (m, positive
   // beyond the cut) for BuilderOptions::core_limit; empty for none. Foot: a plane across the

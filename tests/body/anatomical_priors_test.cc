@@ -57,6 +57,24 @@ TEST(Body, FootPriorsOnTheShippedScanAreInTheirDocumentedRanges) {
   ASSERT_TRUE(static_cast<bool>(priors.core_limit));
   EXPECT_GT(priors.core_limit(toe.point), 0.02);
   EXPECT_LT(priors.core_limit(ball.point), 0);
+  // The toes' height above the weight-bearing line, recomputed from its definition: the least
+  // height of the skin past the core's cut above the line through the heel's and the ball's
+  // lowest skin (the landmarks). This scan's toes are held up (a foot at rest; README "Scans").
+  auto along = [&](const Eigen::Vector3d& p) {
+    return priors.length_direction * (p.z() - priors.start_z) / priors.length;
+  };
+  double toes = INFINITY;
+  for (Eigen::Index i = 0; i < skin.vertices.rows(); ++i) {
+    const Eigen::Vector3d p = skin.vertices.row(i).transpose();
+    if (priors.core_limit(p) <= 0) continue;
+    const double floor = heel.point.y() + (along(p) - along(heel.point)) /
+                                              (along(ball.point) - along(heel.point)) *
+                                              (ball.point.y() - heel.point.y());
+    toes = std::min(toes, p.y() - floor);
+  }
+  EXPECT_NEAR(priors.toe_clearance, toes, 1e-12);
+  EXPECT_GT(priors.toe_clearance, 0.005);
+  EXPECT_NE(priors.summary.find("toes held up"), std::string::npos) << priors.summary;
   EXPECT_NEAR(heel.youngs_modulus, 45e3, 1e3);
   EXPECT_GE(ball.youngs_modulus, 53e3);
   EXPECT_LE(ball.youngs_modulus, 62e3);
