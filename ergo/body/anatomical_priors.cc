@@ -475,7 +475,9 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
     if (!std::isfinite(priors.toe_clearance)) priors.toe_clearance = 0;
     summary << ", the toes' lowest skin " << std::round(10e3 * priors.toe_clearance) / 10
             << " mm above the line the heel and the ball stand on"
-            << (priors.toe_clearance > 0.005 ? " (toes held up: standing, they carry load)" : "");
+            << (priors.toe_clearance > 0.005
+                    ? " (toes held up: a standing foot's rest on the floor)"
+                    : "");
   } else if (options.anatomy == Anatomy::kSeat) {
     const SeatModel seat = DetectSeat(v, normals, source, &priors.landmarks);
     prior = [seat](const Eigen::Vector3d& p, const Eigen::Vector3d& n) { return seat.At(p, n); };

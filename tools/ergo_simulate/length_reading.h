@@ -23,7 +23,7 @@ struct LengthReading {
   bool foot_regions = false;          // report the foot's split
   bool auto_regions = false;          // --regions=auto: the foot's split for a recorded foot
   HeelEnd heel_end = HeelEnd::kAuto;  // --heel_end
-  bool heel_at_min_z = true;          // meaningful when either of the above is set
+  bool heel_at_min_z = true;  // set by ResolveLengthReading when load_point or foot_regions is
 };
 
 // Reads --load_point, --heel_end and --regions (before any work: a bad value is refused at
