@@ -171,7 +171,7 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
     scenario.regions.from_min_z =
         o.user_body.empty() ||
         HeelAtMinZ(scenario.body->rest().vertices, o.user_body.anatomy.heel_end, "shoe regions");
-    scenario.regions.names = {"rearfoot", "midfoot", "forefoot"};
+    scenario.regions.names = FootRegionNames();
     scenario.regions.ends = FootRegionEnds();
   } catch (const InputError&) {
   }

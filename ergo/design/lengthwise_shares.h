@@ -9,6 +9,7 @@
 // Metres, N.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "ergo/body/layered_body.h"
@@ -16,8 +17,9 @@
 
 namespace ergo {
 
-// The foot's bands' upper ends, fractions of its length from the heel.
+// The foot's bands' upper ends, fractions of its length from the heel, and their names.
 inline std::vector<double> FootRegionEnds() { return {0.3, 0.6, 1.0}; }
+inline std::vector<std::string> FootRegionNames() { return {"rearfoot", "midfoot", "forefoot"}; }
 
 struct LengthwiseShares {
   std::vector<double> shares;  // one per band, summing to 1; empty when nothing touches

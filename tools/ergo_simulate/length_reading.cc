@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <gflags/gflags.h>
@@ -94,7 +95,7 @@ std::string ReportLengthReading(const LengthReading& reading, const LayeredBody&
   const LengthwiseShares split =
       ComputeLengthwiseShares(body, contacts, ends, reading.heel_at_min_z);
   if (split.shares.empty()) return "";
-  const char* names[] = {"rearfoot", "midfoot", "forefoot"};
+  const std::vector<std::string> names = FootRegionNames();
   Json shares = Json::object();
   for (size_t k = 0; k < split.shares.size(); ++k) shares[names[k]] = split.shares[k];
   Json regions = Json::object();
