@@ -18,6 +18,8 @@ are kept).
 usage: pose_foot_scan.py IN.obj OUT.obj [--axes=y,z,x] [--forefoot_eversion=DEG]
            [--toe_flexion=DEG] [--forefoot_axis_height=25] [--toe_axis_height=15]
 """
+import math
+import os
 import sys
 
 import numpy as np
@@ -80,24 +82,53 @@ def main(argv):
         sys.exit(__doc__)
     try:
         order = axis_permutation(options["axes"])
-        values = {k: float(v) for k, v in options.items() if k != "axes"}
+        values = {}
+        for key, text in options.items():
+            if key == "axes":
+                continue
+            try:
+                value = float(text)
+            except ValueError:
+                value = math.nan
+            if not math.isfinite(value):
+                raise ValueError(f"--{key}={text}: give a finite number")
+            values[key] = value
     except ValueError as error:
         sys.exit(f"pose_foot_scan.py: {error}")
-    with open(paths[0]) as f:
-        lines = f.read().split("\n")
+    try:
+        with open(paths[0]) as f:
+            lines = f.read().split("\n")
+    except (OSError, UnicodeDecodeError) as error:
+        sys.exit(f"pose_foot_scan.py: cannot read {paths[0]}: {error}")
     rows = [i for i, line in enumerate(lines) if line.startswith("v ")]
     if not rows:
         sys.exit(f"pose_foot_scan.py: {paths[0]}: no vertex (v) lines")
-    scan = np.array([[float(t) for t in lines[i].split()[1:4]] for i in rows])
+    scan = np.empty((len(rows), 3))
+    for k, i in enumerate(rows):
+        try:
+            scan[k] = [float(t) for t in lines[i].split()[1:4]]
+        except ValueError:
+            sys.exit(f"pose_foot_scan.py: {paths[0]}:{i + 1}: a vertex needs three numbers: "
+                     f"'{lines[i]}'")
+        if not np.isfinite(scan[k]).all():
+            sys.exit(f"pose_foot_scan.py: {paths[0]}:{i + 1}: a vertex coordinate is not finite")
     ergo = scan[:, order]
     posed = pose(ergo, values["forefoot_eversion"], values["toe_flexion"],
                  1e-3 * values["forefoot_axis_height"], 1e-3 * values["toe_axis_height"])
     back = np.empty_like(posed)
     back[:, order] = posed
     for i, (x, y, z) in zip(rows, back):
-        lines[i] = f"v {x!r} {y!r} {z!r}"
-    with open(paths[1], "w") as f:
-        f.write("\n".join(lines))
+        lines[i] = f"v {float(x)!r} {float(y)!r} {float(z)!r}"
+    # Written beside the target, then renamed: a failed write leaves no partial file.
+    temporary = paths[1] + ".partial"
+    try:
+        with open(temporary, "w") as f:
+            f.write("\n".join(lines))
+        os.replace(temporary, paths[1])
+    except OSError as error:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        sys.exit(f"pose_foot_scan.py: cannot write {paths[1]}: {error}")
     print(f"posed {len(rows)} vertices: forefoot everted {values['forefoot_eversion']} deg, "
           f"toes flexed {values['toe_flexion']} deg -> {paths[1]}")
 

@@ -194,3 +194,22 @@ def test_pose_foot_scan_turns_each_part_by_its_angle_about_its_axis(source_dir, 
     bad = run_pose(source_dir, source, tmp_path / "bad.obj", "--axes=y,y,x")
     assert bad.returncode != 0 and "--axes=y,y,x" in bad.stderr
     assert not (tmp_path / "bad.obj").exists()
+
+
+def test_pose_foot_scan_refuses_bad_input_naming_it_and_writes_nothing(source_dir, tmp_path):
+    good = tmp_path / "foot.obj"
+    good.write_text("v 0 0 0\nv 0.25 0.1 0.05\nv 0.1 0.05 0.02\nf 1 2 3\n")
+    broken = tmp_path / "broken.obj"
+    broken.write_text("v 0 0 0\nv 0.25 oops 0.05\nf 1 2 2\n")
+    cases = [((tmp_path / "missing.obj", "--axes=y,z,x"), "cannot read"),
+             ((broken, "--axes=y,z,x"), "broken.obj:2"),
+             ((good, "--forefoot_eversion=nan"), "--forefoot_eversion=nan"),
+             ((good, "--toe_flexion=ten"), "--toe_flexion=ten"),
+             ((good, "--twist=3"), "unknown option --twist=3")]
+    for (source, option), message in cases:
+        out = tmp_path / "out.obj"
+        done = run_pose(source_dir, source, out, option)
+        assert done.returncode != 0, message
+        assert message in done.stderr, done.stderr
+        assert "Traceback" not in done.stderr
+        assert not out.exists() and not (tmp_path / "out.obj.partial").exists()
