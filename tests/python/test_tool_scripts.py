@@ -213,3 +213,54 @@ def test_pose_foot_scan_refuses_bad_input_naming_it_and_writes_nothing(source_di
         assert message in done.stderr, done.stderr
         assert "Traceback" not in done.stderr
         assert not out.exists() and not (tmp_path / "out.obj.partial").exists()
+
+
+def run_plot_simulation(source_dir, directory):
+    return subprocess.run(
+        [sys.executable, str(source_dir / "tools" / "plot_simulation.py"), str(directory)],
+        capture_output=True, text=True, timeout=300)
+
+
+def test_plot_simulation_draws_the_map_and_refuses_unusable_data(source_dir, tmp_path):
+    pytest.importorskip("matplotlib")
+    # A 10 x 10 grid of skin points (x, z in metres) with a pressure bump, two triangles per
+    # cell, the foot's three bands and a centre of pressure: what ergo_simulate writes.
+    n = 10
+    points = [[0.01 * i, 0.02 * j] for j in range(n) for i in range(n)]
+    pressure = [1e5 * math.exp(-((x - 0.05) ** 2 + (z - 0.1) ** 2) / 2e-3) for x, z in points]
+    triangles = []
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a = j * n + i
+            triangles += [[a, a + 1, a + n + 1], [a, a + n + 1, a + n]]
+    bands = [{"name": name, "v_from": 0.06 * k, "v_to": 0.06 * (k + 1), "share": share}
+             for k, (name, share) in enumerate((("rearfoot", 0.5), ("midfoot", 0.1),
+                                               ("forefoot", 0.4)))]
+    data = {"tool": "ergo_simulate", "title": "grid on plate", "view": {"axes": ["x", "z"]},
+            "skin": {"points2d": points, "triangles": triangles, "pressure": pressure},
+            "centre_of_pressure2d": [0.05, 0.1], "regions": bands}
+    good = tmp_path / "good"
+    good.mkdir()
+    (good / "plot_data.json").write_text(json.dumps(data))
+    done = run_plot_simulation(source_dir, good)
+    assert done.returncode == 0, done.stderr
+    for png in ("pressure_map.png", "pressure_histogram.png"):
+        assert (good / png).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", png
+        assert (good / png).stat().st_size > 10000, png
+    assert not list(good.glob("*.tmp.png"))
+    # One pressure short, a missing view, no file, not JSON: exit 2 naming the file, no picture.
+    short = dict(data, skin=dict(data["skin"], pressure=pressure[:-1]))
+    no_view = {k: v for k, v in data.items() if k != "view"}
+    for name, text, message in (("short", json.dumps(short), "100 points but 99 pressures"),
+                                ("no_view", json.dumps(no_view), "'view'"),
+                                ("missing", None, "No such file"),
+                                ("not_json", "{oops", "plot_data.json")):
+        bad = tmp_path / name
+        bad.mkdir()
+        if text is not None:
+            (bad / "plot_data.json").write_text(text)
+        done = run_plot_simulation(source_dir, bad)
+        assert done.returncode == 2, name
+        assert "plot_data.json" in done.stderr and message in done.stderr, done.stderr
+        assert "Traceback" not in done.stderr
+        assert not list(bad.glob("*.png")), name

@@ -1,10 +1,13 @@
 // ergo_simulate end to end: a ball built by ergo_body resting on a slab — outputs, force
 // balance, calibrated penetration, honest failure reports and clear input errors.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +15,7 @@
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/primitives.h"
 #include "tests/support/test_paths.h"
+#include "tools/common/child_process.h"
 
 namespace ergo {
 namespace {
@@ -74,10 +78,14 @@ class ToolsSimulate : public ::testing::Test {
     fs::remove_all(*dir_);
     delete dir_;
   }
-  static std::string Simulate(const std::string& extra, const std::string& out) {
+  // The pictures take a second or two of matplotlib per run: only the test of the pressure
+  // map asks for them.
+  static std::string Simulate(const std::string& extra, const std::string& out,
+                              bool pictures = false) {
     return "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
            "/ball --support=" + *dir_ +
-           "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --out=" + *dir_ + "/" + out + " " + extra;
+           "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --out=" + *dir_ + "/" + out +
+           (pictures ? " " : " --plot=false ") + extra;
   }
   static std::string* dir_;
 };
@@ -107,6 +115,79 @@ TEST_F(ToolsSimulate, CalibratedRunBalancesTheLoadAndWritesEveryOutput) {
   std::string first;
   std::getline(vtu, first);
   EXPECT_NE(first.find("<?xml"), std::string::npos);
+}
+
+// `ergo_mesh box` writes the slab the suite builds with MakeBox, vertex for vertex (its OBJ
+// keeps 17 significant digits: 1e-9 mm covers the millimetre conversion), and the ball stands
+// on it as on the suite's own slab.
+TEST_F(ToolsSimulate, ErgoMeshBoxWritesTheSlabToStandOn) {
+  const std::string box = *dir_ + "/box_mm.obj";
+  const CommandResult made =
+      RunCommand("timeout 60 " ERGO_BIN_DIR "/ergo_mesh box " + box +
+                 " --lo=-0.15,-0.11,-0.15 --hi=0.15,-0.06,0.15 --cells=2,1,2 --out_unit=mm");
+  ASSERT_EQ(made.status, 0) << made.output;
+  const TriMesh written = ReadTriMesh(box);
+  const TriMesh expected = MakeBox({-150, -110, -150}, {150, -60, 150}, {2, 1, 2});
+  ASSERT_EQ(written.vertices.rows(), expected.vertices.rows());
+  ASSERT_EQ(written.triangles, expected.triangles);
+  EXPECT_LT((written.vertices - expected.vertices).cwiseAbs().maxCoeff(), 1e-9);
+  const CommandResult check =
+      RunCommand("timeout 60 " ERGO_BIN_DIR "/ergo_mesh check " + box + " --closed --unit=mm");
+  EXPECT_EQ(check.status, 0) << check.output;
+  const CommandResult stand = RunCommand(
+      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + *dir_ +
+      "/ball --support=" + box +
+      " --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 --out=" + *dir_ + "/on_box");
+  EXPECT_EQ(stand.status, 0) << stand.output;
+}
+
+// The pressure map behind the pictures (plot_data.json): one pressure per skin vertex whose
+// largest is the summary's peak, seen along the load (x, z for gravity along -y); every skin
+// vertex in contact is a corner of a drawn triangle (those facing the support: with the facing
+// test turned round, the contact patch's inner vertices would be on none); the centre of
+// pressure under the ball's centre, to 1 mm (1 % of its diameter: the faceted mesh's asymmetry,
+// measured 0.2 mm along z). The pictures themselves when matplotlib is there.
+TEST_F(ToolsSimulate, ThePressureMapIsTheSkinSeenFromTheSupportWithItsPictures) {
+  const CommandResult run = RunCommand(Simulate("--contact_stiffness=1e8", "map", true));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const std::string out = *dir_ + "/map";
+  const Json summary = ReadJsonFile(out + "/summary.json");
+  const Json data = ReadJsonFile(out + "/plot_data.json");
+  EXPECT_EQ(GetString(data, "tool", "plot_data"), "ergo_simulate");
+  const Json& axes = GetMember(GetMember(data, "view", "plot_data"), "axes", "view");
+  EXPECT_EQ(axes.at(0).get<std::string>(), "x");
+  EXPECT_EQ(axes.at(1).get<std::string>(), "z");
+  const Json& skin = GetMember(data, "skin", "plot_data");
+  const Json& points = GetMember(skin, "points2d", "skin");
+  const Json& pressure = GetMember(skin, "pressure", "skin");
+  const Json& triangles = GetMember(skin, "triangles", "skin");
+  ASSERT_EQ(points.size(), pressure.size());
+  ASSERT_GT(triangles.size(), 0u);
+  double peak = 0;
+  for (const Json& p : pressure) peak = std::max(peak, p.get<double>());
+  EXPECT_NEAR(peak, GetNumber(summary, "peak_pressure_Pa", "summary"), 1e-9 * peak);
+  std::vector<char> drawn(points.size(), 0);
+  for (const Json& t : triangles) {
+    for (const Json& corner : t) {
+      const size_t i = corner.get<size_t>();
+      ASSERT_LT(i, points.size());
+      drawn[i] = 1;
+    }
+  }
+  int in_contact = 0;
+  for (size_t i = 0; i < pressure.size(); ++i) {
+    if (pressure[i].get<double>() <= 0) continue;
+    ++in_contact;
+    EXPECT_TRUE(drawn[i]) << "skin vertex " << i << " in contact is on no drawn triangle";
+  }
+  EXPECT_GT(in_contact, 3);
+  const Json& cop = GetMember(data, "centre_of_pressure2d", "plot_data");
+  EXPECT_LT(std::hypot(cop.at(0).get<double>(), cop.at(1).get<double>()), 1e-3);
+  EXPECT_EQ(FindMember(data, "regions"), nullptr);  // a ball has no foot's bands
+  if (!FindPythonWithMatplotlib().empty()) {
+    for (const char* png : {"pressure_map.png", "pressure_histogram.png"})
+      EXPECT_GT(fs::file_size(out + "/" + png), 1000u) << png;
+  }
 }
 
 TEST_F(ToolsSimulate, ANonConvergedSolveExitsNonZeroAndStillWritesTheSummary) {
@@ -220,11 +301,12 @@ TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
       Json::array({Json{{"name", "heel"}, {"point_m", {0.0, -0.05, 0.04}}},
                    Json{{"name", "toe tip"}, {"point_m", {0.0, -0.04, -0.05}}}});
   WriteJsonFile(foot + "/body.json", record);
-  const CommandResult run = RunCommand(
-      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + foot + " --support=" + *dir_ +
-      "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
-      "--out=" +
-      *dir_ + "/foot_split");
+  const CommandResult run =
+      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
+                 " --support=" + *dir_ +
+                 "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
+                 "--out=" +
+                 *dir_ + "/foot_split");
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("load split rearfoot / midfoot / forefoot"), std::string::npos)
       << run.output;
@@ -242,14 +324,36 @@ TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
   const double from_heel = GetNumber(summary, "centre_of_pressure_heel_fraction", "summary");
   EXPECT_NEAR(from_heel, 1 - GetNumber(summary, "centre_of_pressure_z_fraction", "summary"), 1e-12);
   EXPECT_NEAR(from_heel, 0.5, 0.01);
-  // --regions=none keeps it out.
-  const CommandResult quiet = RunCommand(
-      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + foot + " --support=" + *dir_ +
-      "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
-      "--regions=none --out=" +
-      *dir_ + "/foot_quiet");
+  // The pressure map marks the same bands: from the heel at the largest z towards the smallest,
+  // end to end over the ball's 0.1 m (its mesh 0.6 % short), each with the summary's share.
+  const Json plot = ReadJsonFile(*dir_ + "/foot_split/plot_data.json");
+  const Json& bands = GetMember(plot, "regions", "plot_data");
+  ASSERT_EQ(bands.size(), 3u);
+  const char* names[3] = {"rearfoot", "midfoot", "forefoot"};
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(GetString(bands[k], "name", "band"), names[k]);
+    EXPECT_EQ(GetNumber(bands[k], "share", "band"), GetNumber(shares, names[k], "shares"));
+    EXPECT_GT(GetNumber(bands[k], "v_from", "band"), GetNumber(bands[k], "v_to", "band"));
+    if (k > 0) {
+      EXPECT_EQ(GetNumber(bands[k], "v_from", "band"), GetNumber(bands[k - 1], "v_to", "band"));
+    }
+  }
+  EXPECT_NEAR(GetNumber(bands[0], "v_from", "band") - GetNumber(bands[2], "v_to", "band"), 0.1,
+              1e-3);
+  EXPECT_NEAR(GetNumber(bands[0], "v_to", "band") - GetNumber(bands[0], "v_from", "band"),
+              -0.3 * (GetNumber(bands[0], "v_from", "band") - GetNumber(bands[2], "v_to", "band")),
+              1e-12);
+  // --regions=none keeps it out; --plot=false writes the map's data but no picture.
+  const CommandResult quiet =
+      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
+                 " --support=" + *dir_ +
+                 "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
+                 "--regions=none --out=" +
+                 *dir_ + "/foot_quiet");
   ASSERT_EQ(quiet.status, 0) << quiet.output;
   EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/summary.json"), "region_shares"), nullptr);
+  EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/plot_data.json"), "regions"), nullptr);
+  EXPECT_FALSE(fs::exists(*dir_ + "/foot_quiet/pressure_map.png"));
 }
 
 // The slab as foam (--support_model=soft): Mesh_3 of the slab, its bottom held; the ball sinks
@@ -280,7 +384,7 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
   TetMesh slab = MakeTetGrid({-150, -110, -150}, {150, -60, 150}, {6, 2, 6});
   WriteTetMesh(*dir_ + "/slab_mm.msh", slab);
   const CommandResult tets =
-      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
+      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + *dir_ +
                  "/ball --support_tets=" + *dir_ +
                  "/slab_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
                  "--support_model=soft --out=" +
@@ -296,10 +400,11 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
     std::ofstream bad(*dir_ + "/held_bad.txt");
     bad << "0 1\n2 99999\n";
   }
-  const std::string with_tets = "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
-                                "/ball --support_tets=" + *dir_ +
-                                "/slab_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz "
-                                "--contact_stiffness=1e8 --support_model=soft ";
+  const std::string with_tets =
+      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + *dir_ +
+      "/ball --support_tets=" + *dir_ +
+      "/slab_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz "
+      "--contact_stiffness=1e8 --support_model=soft ";
   const CommandResult listed =
       RunCommand(with_tets + "--support_held=" + *dir_ + "/held.txt --out=" + *dir_ + "/soft_held");
   ASSERT_EQ(listed.status, 0) << listed.output;
@@ -312,10 +417,11 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
   // both bases held; the ball rests on both. A held-file list of the wrong length is refused.
   WriteTetMesh(*dir_ + "/left_mm.msh", MakeTetGrid({-150, -110, -150}, {-5, -60, 150}, {3, 2, 6}));
   WriteTetMesh(*dir_ + "/right_mm.msh", MakeTetGrid({5, -110, -150}, {150, -60, 150}, {3, 2, 6}));
-  const std::string two_slabs = "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ +
-                                "/ball --support_tets=" + *dir_ + "/left_mm.msh," + *dir_ +
-                                "/right_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz "
-                                "--contact_stiffness=1e8 --support_model=soft ";
+  const std::string two_slabs =
+      "timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + *dir_ +
+      "/ball --support_tets=" + *dir_ + "/left_mm.msh," + *dir_ +
+      "/right_mm.msh --unit=mm --lock=tx,tz,rx,ry,rz "
+      "--contact_stiffness=1e8 --support_model=soft ";
   const CommandResult two = RunCommand(two_slabs + "--out=" + *dir_ + "/soft_two");
   ASSERT_EQ(two.status, 0) << two.output;
   const Json two_summary = ReadJsonFile(*dir_ + "/soft_two/summary.json");
@@ -334,9 +440,10 @@ TEST_F(ToolsSimulate, ASoftSlabDeformsUnderTheBallAndItsSolidIsWritten) {
     open.triangles.conservativeResize(open.triangles.rows() - 2, 3);
     WriteTriMesh(*dir_ + "/open_mm.stl", open);
   }
-  const CommandResult open_run = RunCommand(
-      "timeout 120 " ERGO_BIN_DIR "/ergo_simulate --body=" + *dir_ + "/ball --support=" + *dir_ +
-      "/open_mm.stl --unit=mm --support_model=soft --out=" + *dir_ + "/soft_open");
+  const CommandResult open_run =
+      RunCommand("timeout 120 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + *dir_ +
+                 "/ball --support=" + *dir_ +
+                 "/open_mm.stl --unit=mm --support_model=soft --out=" + *dir_ + "/soft_open");
   EXPECT_EQ(open_run.status, 2) << open_run.output;
   EXPECT_NE(open_run.output.find("open_mm.stl"), std::string::npos) << open_run.output;
   EXPECT_EQ(open_run.output.find("Mesh_3"), std::string::npos) << open_run.output;

@@ -1,4 +1,4 @@
-// ergo_mesh: checks and converts mesh files.
+// ergo_mesh: checks, converts and makes mesh files.
 //
 //   ergo_mesh check FILE [--closed] [--unit=m|mm]
 //       reads FILE (.obj .off .ply .stl .msh .node/.ele) and reports every
@@ -8,10 +8,16 @@
 //   [--msh22]
 //       reads IN and writes OUT in the format of OUT's extension (exit 2 if IN
 //       is unusable).
+//   ergo_mesh box OUT --lo=X,Y,Z --hi=X,Y,Z [--cells=NX,NY,NZ] [--out_unit=m|mm]
+//       writes the closed, outward box [lo, hi] (metres), each face a grid of
+//       cells: a plate or slab to stand a body on (ergo_simulate --support).
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -20,13 +26,18 @@
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
+#include "ergo/mesh/primitives.h"
+#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
 
 DEFINE_bool(closed, false, "check: the surface must be closed (open boundary is a problem)");
 DEFINE_string(unit, "m", "unit of the input file's coordinates: m or mm");
-DEFINE_string(out_unit, "m", "convert: unit of the output file's coordinates: m or mm");
-DEFINE_bool(binary, false, "convert: write binary PLY / STL");
+DEFINE_string(out_unit, "m", "convert, box: unit of the output file's coordinates: m or mm");
+DEFINE_bool(binary, false, "convert, box: write binary PLY / STL");
 DEFINE_bool(msh22, false, "convert: write gmsh MSH 2.2 instead of 4.1");
+DEFINE_string(lo, "", "box: the smallest corner X,Y,Z in metres");
+DEFINE_string(hi, "", "box: the largest corner X,Y,Z in metres");
+DEFINE_string(cells, "1,1,1", "box: grid cells along x, y and z on each face");
 DEFINE_bool(self_intersections, true, "check: look for self-intersections (CGAL)");
 DEFINE_int32(max_examples, 5, "check: examples listed per kind of finding");
 
@@ -71,13 +82,56 @@ int Convert(const std::string& in, const std::string& out) {
   return 0;
 }
 
+// Three numbers from a flag's "A,B,C"; `integer` asks for whole numbers 1..1000.
+Eigen::Vector3d ThreeNumbers(const std::string& flag, const std::string& text, bool integer) {
+  const std::vector<std::string> items = ergo::SplitList(text, ',');
+  Eigen::Vector3d v;
+  bool ok = items.size() == 3;
+  for (size_t k = 0; ok && k < 3; ++k) {
+    char* end = nullptr;
+    v[k] = std::strtod(items[k].c_str(), &end);
+    ok = end != items[k].c_str() && *end == '\0' && std::isfinite(v[k]) &&
+         (!integer || (v[k] == std::floor(v[k]) && v[k] >= 1 && v[k] <= 1000));
+  }
+  if (!ok) {
+    throw ergo::InputError(
+        "--" + flag, "",
+        "'" + text + "' is not three " + (integer ? "whole numbers 1..1000" : "finite numbers"),
+        integer ? "e.g. --cells=30,1,50"
+                : "write X,Y,Z in metres, e.g. --" + flag + "=-0.15,-0.1,-0.25");
+  }
+  return v;
+}
+
+int Box(const std::string& out) {
+  if (FLAGS_lo.empty() || FLAGS_hi.empty())
+    throw ergo::InputError("--lo", "", "and --hi are required for box",
+                           "e.g. --lo=-0.15,-0.1,-0.25 --hi=0.15,-0.08,0.25");
+  const Eigen::Vector3d lo = ThreeNumbers("lo", FLAGS_lo, false);
+  const Eigen::Vector3d hi = ThreeNumbers("hi", FLAGS_hi, false);
+  const Eigen::Vector3d cells = ThreeNumbers("cells", FLAGS_cells, true);
+  for (int k = 0; k < 3; ++k) {
+    if (!(hi[k] > lo[k])) {
+      throw ergo::InputError("--hi", "", std::string("is not above --lo along ") + "xyz"[k],
+                             "give the smallest corner as --lo and the largest as --hi");
+    }
+  }
+  ergo::WriteOptions write;
+  write.unit = UnitFlag("out_unit", FLAGS_out_unit);
+  write.encoding = FLAGS_binary ? ergo::Encoding::kBinary : ergo::Encoding::kAscii;
+  ergo::WriteTriMesh(out, ergo::MakeBox(lo, hi, cells.cast<int>()), write);
+  std::cout << "wrote " << out << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "ergo_mesh check FILE [--closed] [--unit=m|mm]\n"
       "       ergo_mesh convert IN OUT [--unit=m|mm] "
-      "[--out_unit=m|mm] [--binary] [--msh22]");
+      "[--out_unit=m|mm] [--binary] [--msh22]\n"
+      "       ergo_mesh box OUT --lo=X,Y,Z --hi=X,Y,Z [--cells=NX,NY,NZ] [--out_unit=m|mm]");
   try {
     ergo::CheckCommandLine(argc, argv, /*positional=*/3);  // the verb and its files
   } catch (const ergo::InputError& error) {
@@ -91,6 +145,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "check" && argc == 3) return Check(argv[2]);
     if (command == "convert" && argc == 4) return Convert(argv[2], argv[3]);
+    if (command == "box" && argc == 3) return Box(argv[2]);
   } catch (const ergo::InputError& error) {
     std::cerr << error.what() << "\n";
     return kUsageError;

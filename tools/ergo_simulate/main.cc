@@ -1,12 +1,13 @@
 // ergo_simulate: the static contact equilibrium of a body (a directory written by
 // `ergo_body build`) resting on a support mesh under gravity and an external wrench (paper
-// §3.3–3.5). Writes OUT/body_deformed.vtu, OUT/support.vtu and OUT/summary.json, as one unit
-// (a killed run leaves the previous OUT or none). The work is SolveStaticEquilibrium
-// (ergo/design/static_equilibrium.h); its progress (placement, calibration steps, Newton
-// iterations, elapsed time) goes to stderr unless --progress=false. --load_point and --regions
-// read the body along its length as ergo_optimize reads the shoe's foot (length_reading.h).
-// Exit status: 0 converged with the stiffness asked for, 1 the computation did not succeed
-// (not converged, no contact, stiffness calibration failed: the summary says why; or
+// §3.3–3.5). Writes OUT/body_deformed.vtu, OUT/support.vtu, OUT/summary.json and the skin's
+// pressure map (plot_data.json; pressure_map.png and pressure_histogram.png by
+// tools/plot_simulation.py), as one unit (a killed run leaves the previous OUT or none). The work
+// is SolveStaticEquilibrium (ergo/design/static_equilibrium.h); its progress (placement,
+// calibration steps, Newton iterations, elapsed time) goes to stderr unless --progress=false.
+// --load_point and --regions read the body along its length as ergo_optimize reads the shoe's foot
+// (length_reading.h). Exit status: 0 converged with the stiffness asked for, 1 the computation did
+// not succeed (not converged, no contact, stiffness calibration failed: the summary says why; or
 // --max_seconds ran out: nothing written), 2 unusable input, 130 / 143 interrupted (nothing
 // written).
 #include <cmath>
@@ -30,12 +31,14 @@
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/split_list.h"
+#include "tools/common/child_process.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/soft_support_flags.h"
 #include "tools/common/vtu_flags.h"
 #include "tools/ergo_simulate/length_reading.h"
+#include "tools/ergo_simulate/plot_data.h"
 
 DEFINE_string(body, "", "body directory written by `ergo_body build` (required)");
 DEFINE_string(support, "",
@@ -67,12 +70,17 @@ DEFINE_int32(threads, 0, "threads for assembly and contact (0 = all cores)");
 DEFINE_bool(progress, true,
             "print progress to stderr: placement, each calibration step and Newton iteration "
             "(residual, contact vertices) with the elapsed time");
+DEFINE_bool(plot, true,
+            "write pressure_map.png and pressure_histogram.png with tools/plot_simulation.py "
+            "(python3 + matplotlib; plot_data.json is written either way)");
 DEFINE_double(max_seconds, 0,
               "stop when the job has run this long, seconds (exit 1, nothing written); 0 = no "
               "limit");
 
 namespace ergo {
 namespace {
+
+namespace fs = std::filesystem;
 
 Eigen::Vector3d ParseVector(const std::string& text, const std::string& flag) {
   Eigen::Vector3d v;
@@ -215,7 +223,7 @@ int Run() {
     return 1;
   }
 
-  const std::filesystem::path out(output.path());
+  const fs::path out(output.path());
   WriteDeformedBodyVtu((out / "body_deformed.vtu").string(), body, result.state, solved.pressures,
                        vtu_encoding);
   if (soft_support) {
@@ -240,13 +248,20 @@ int Run() {
   const bool touched = result.contact_vertices > 0 || result.contact_springs > 0;
   const bool calibrated = !solved.calibration || solved.calibration->converged;
   WriteJsonFile((out / "summary.json").string(), summary);
+  WriteJsonFile((out / "plot_data.json").string(),
+                SimulationPlotData(body, result.state, solved.pressures, length_reading, summary,
+                                   fs::path(FLAGS_body).filename().string() + " on " +
+                                       fs::path(support_source).filename().string()));
+  const bool plotted = FLAGS_plot && !StopOnSignals::stopped() &&
+                       RunPictureScript("ergo_simulate", "plot_simulation.py", output.path());
   std::string error;
   if (!output.Commit(&error)) {
     std::cerr << "ergo_simulate: " << error << "\n";
     return 1;
   }
   std::cout << "wrote " << output.final_path() << "/body_deformed.vtu, support.vtu, "
-            << (soft_support ? "support_solid.vtu, " : "") << "summary.json\n";
+            << (soft_support ? "support_solid.vtu, " : "") << "summary.json, plot_data.json"
+            << (plotted ? ", pressure_map.png, pressure_histogram.png" : "") << "\n";
   if (!result.converged) return 1;
   if (!touched) {
     std::cerr << "ergo_simulate: the body does not touch the support at equilibrium\n";
