@@ -22,4 +22,9 @@ inline constexpr double kDegenerateTriangleRatio = 1e-12;
 void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
                          const SelfIntersectionOptions& self_intersection = {});
 
+// The same checks on a body's skin as built (contact takes it as a closed surface whose inside
+// it can tell): the message says that the mesher pinched or overlapped the skin where two
+// parts of the surface (toes, fingers) come closer than the mesh resolves, and what to try.
+void ValidateSkinForContact(const TriMesh& skin, const std::string& source);
+
 }  // namespace ergo

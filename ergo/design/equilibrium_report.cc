@@ -1,5 +1,7 @@
 #include "ergo/design/equilibrium_report.h"
 
+#include <cstdio>
+
 #include <glog/logging.h>
 
 #include "ergo/design/centre_of_pressure.h"
@@ -98,6 +100,32 @@ void WriteSoftSupportVtu(const std::string& path, const ElasticPart& part,
   WriteVtu(path, TetMesh{positions, part.rest().tets}, fields, encoding);
 }
 
+Json TissueCompressionJson(const TissueCompression& c) {
+  Json json = Json::object();
+  json["min_volume_ratio"] = c.min_volume_ratio;
+  json["min_principal_stretch"] = c.min_principal_stretch;
+  json["inversion_threshold"] = c.threshold;
+  json["tets_beyond_inversion_threshold"] = c.tets_beyond_threshold;
+  json["inverted_tets"] = c.inverted_tets;
+  json["worst_point_m"] = Vector3Json(c.worst_point);
+  return json;
+}
+
+std::string DescribeTissueCompression(const TissueCompression& c) {
+  if (c.tets_beyond_threshold == 0) return "";
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "warning: the tissue is crushed beyond its material law in %d tet(s) (%d "
+                "inverted): a principal stretch down to %.3g, below the inversion threshold %.2g "
+                "(more than %.0f %% compression), worst at (%.4g, %.4g, %.4g) m. There the "
+                "energy is the law's numerical extension, not tissue: pressures carried through "
+                "those tets are not measurements of anything (a stiffer or deeper layer there, "
+                "or a support that spreads the load)",
+                c.tets_beyond_threshold, c.inverted_tets, c.min_principal_stretch, c.threshold,
+                100 * (1 - c.threshold), c.worst_point.x(), c.worst_point.y(), c.worst_point.z());
+  return line;
+}
+
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
                         const ContactPressures& pressures, double contact_stiffness) {
   const PressureStatistics human =
@@ -130,6 +158,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
     json["centre_of_pressure_m"] = Vector3Json(cop.point);
     json["centre_of_pressure_z_fraction"] = cop.z_fraction;
   }
+  json["tissue_compression"] = TissueCompressionJson(MeasureTissueCompression(body, result.state));
   json["energy_J"] = result.energy;
   json["zeta_human"] = pressures.human.cost;
   json["zeta_support"] = pressures.support.cost;

@@ -8,6 +8,7 @@
 
 #include "ergo/body/body_state.h"
 #include "ergo/body/elastic_part.h"
+#include "ergo/body/tissue_compression.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/mesh/json.h"
@@ -42,11 +43,18 @@ TriMesh SoftSupportSurface(const ElasticPart& part, const TriMesh& surface,
 void WriteSoftSupportVtu(const std::string& path, const ElasticPart& part,
                          const Vertices& positions, VtuEncoding encoding = VtuEncoding::kBinary);
 
+// "tissue_compression" of an equilibrium's summary: min_volume_ratio, min_principal_stretch,
+// inversion_threshold, tets_beyond_inversion_threshold, inverted_tets, worst_point_m.
+Json TissueCompressionJson(const TissueCompression& compression);
+// One warning line for people when tets are compressed beyond the material's inversion
+// threshold (where they are, what it means); "" otherwise.
+std::string DescribeTissueCompression(const TissueCompression& compression);
+
 // The summary of an equilibrium: converged, status, reason, iterations, residual_N,
 // contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,
 // contact_area_m2, mean_pressure_Pa, p95_pressure_Pa, contact_stiffness_Pa_per_m (κ),
 // centre_of_pressure_m and centre_of_pressure_z_fraction (centre_of_pressure.h),
-// energy_J, the time
+// tissue_compression (tissue_compression.h), energy_J, the time
 // split, and the support side's peak pressure and contact vertex count.
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
                         const ContactPressures& pressures, double contact_stiffness);

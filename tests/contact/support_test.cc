@@ -128,6 +128,33 @@ TEST(Contact, SupportRefusesOpenInconsistentAndDegenerateMeshes) {
   EXPECT_NE(message.find("at least 4"), std::string::npos) << message;
 }
 
+// A built body's skin gets the support's checks with what they mean for a skin: two toes
+// meshed into each other (here two skin spheres overlapping, and two touching at one vertex)
+// are refused naming the built skin, the finding, and the edge lengths to try; a clean skin
+// passes.
+TEST(Support, ABuiltSkinThatTouchesItselfIsRefusedWithWhatToTry) {
+  EXPECT_EQ(InputErrorMessage([&] { ValidateSkinForContact(MakeIcosphere(0.05, 2), "foot"); }), "");
+  TriMesh two = MakeIcosphere(0.2, 2);
+  const TriMesh shifted = MakeIcosphere(0.2, 2, Vector3d(0.15, 0, 0));
+  const Eigen::Index n = two.vertices.rows(), m = two.triangles.rows();
+  two.vertices.conservativeResize(2 * n, 3);
+  two.vertices.bottomRows(n) = shifted.vertices;
+  two.triangles.conservativeResize(2 * m, 3);
+  two.triangles.bottomRows(m) = shifted.triangles.array() + static_cast<int>(n);
+  std::string message =
+      InputErrorMessage([&] { ValidateSkinForContact(two, "foot.obj (the built body's skin)"); });
+  EXPECT_NE(message.find("foot.obj (the built body's skin):triangles"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("self-intersecting"), std::string::npos) << message;
+  EXPECT_NE(message.find(" m); the meshed skin touches or overlaps itself"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("--edge_length"), std::string::npos) << message;
+  message = InputErrorMessage([&] { ValidateSkinForContact(TwoTetrahedra(false), "hand.obj"); });
+  EXPECT_NE(message.find("non-manifold vertex"), std::string::npos) << message;
+  EXPECT_NE(message.find("(at (0, 0, 0) m)"), std::string::npos) << message;  // the pinch
+  EXPECT_NE(message.find("touches or overlaps itself"), std::string::npos) << message;
+}
+
 // ---- Brute force ----
 
 struct Shape {

@@ -21,6 +21,8 @@
 
 #include "ergo/body/body_build.h"
 #include "ergo/body/body_directory.h"
+#include "ergo/body/layered_body.h"
+#include "ergo/contact/support_validation.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/split_list.h"
@@ -99,6 +101,14 @@ Eigen::Vector3d ParseTriple(const std::string& flag, const std::string& text) {
   return Eigen::Vector3d(values[0], values[1], values[2]);
 }
 
+// A body no tool could use is not written: contact refuses a skin that pinches or overlaps
+// itself (ValidateSkinForContact).
+void RequireSkinUsableForContact(const BodyRecord& record, const std::string& source) {
+  const LayeredBody body = LayeredBody::Create(record.rest, record.attached, record.material, {});
+  ValidateSkinForContact(body.skin().RestSurface(record.rest.vertices),
+                         source + " (the built body's skin)");
+}
+
 int Build() {
   if (FLAGS_out.empty()) FlagError("out", "is required", "give the output directory, --out=DIR");
   const VtuEncoding vtu_encoding = VtuEncodingFromFlags();
@@ -135,6 +145,7 @@ int Build() {
     };
   }
   const BuiltBody built = BuildBody(options);
+  RequireSkinUsableForContact(built.record, FLAGS_surface.empty() ? FLAGS_shape : FLAGS_surface);
   SaveBodyDirectory(FLAGS_out, built.record, vtu_encoding);
   std::cout << built.report;
   std::cout << "wrote " << FLAGS_out << "/{" << kBodyJsonFile << ", " << kBodyMeshFile << ", "

@@ -212,6 +212,9 @@ int Run() {
   if (solved.calibration)
     std::cout << "stiffness calibration: " << solved.calibration->BriefReport() << "\n";
   std::cout << result.FullReport() << "\n";
+  const std::string crushed =
+      DescribeTissueCompression(MeasureTissueCompression(body, result.state));
+  if (!crushed.empty()) std::cerr << "ergo_simulate: " << crushed << "\n";
   if (StopOnSignals::stopped()) {
     std::cerr << "ergo_simulate: interrupted before any result; nothing written\n";
     return StopOnSignals::ExitCode();
