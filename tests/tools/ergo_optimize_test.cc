@@ -230,6 +230,14 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   EXPECT_GT(fore, 0.2);
   EXPECT_NE(Read(dir + "/summary.md").find("Load split rearfoot / midfoot / forefoot"),
             std::string::npos);
+  // The generated foot at half body weight stays within its material law on the flat sole
+  // (measured smallest principal stretch 0.286, the threshold 0.1), and summary.md says so.
+  const Json& squeeze = GetMember(summary, "tissue_compression", "summary");
+  const Json& squeezed = GetMember(squeeze, "initial", "tissue_compression");
+  EXPECT_EQ(GetNumber(squeezed, "tets_beyond_inversion_threshold", "initial"), 0);
+  EXPECT_GT(GetNumber(squeezed, "min_principal_stretch", "initial"), 0.1);
+  EXPECT_LT(GetNumber(squeezed, "min_principal_stretch", "initial"), 1);
+  EXPECT_NE(Read(dir + "/summary.md").find("0 tets on the initial design"), std::string::npos);
   // The pressure maps mark the same bands: contiguous along z from the heel, carrying the
   // summary's shares.
   const Json plot = ReadJsonFile(dir + "/plot_data.json");

@@ -24,6 +24,8 @@ DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorX
       ComputePressureStatistics(report.pressures.human.pressure, problem.body().skin().rest_areas);
   report.peak_pressure = skin.peak;
   report.skin_contact_area = skin.contact_area;
+  report.compression =
+      MeasureTissueCompression(problem.body(), report.evaluation.equilibrium.state);
   report.centre_of_pressure = ComputeCentreOfPressure(
       problem.body(), report.evaluation.equilibrium.state, report.pressures.contacts);
   if (!regions.names.empty()) {

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "ergo/body/tissue_compression.h"
 #include "ergo/design/centre_of_pressure.h"
 #include "ergo/design/design_problem.h"
 #include "ergo/ergonomics/contact_pressures.h"
@@ -31,6 +32,8 @@ struct DesignReport {
   // The load's split over the scenario's regions (lengthwise_shares.h), one share per region;
   // empty without regions, equilibrium or contact.
   std::vector<double> region_shares;
+  // How hard the equilibrium squeezes the tissue (ergo/body/tissue_compression.h).
+  TissueCompression compression;
 };
 
 // Evaluates `x` on `problem` (φ only) and gathers its pressures. evaluation.ok tells

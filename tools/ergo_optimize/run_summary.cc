@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "ergo/design/equilibrium_report.h"
 #include "ergo/design/evaluation_timing.h"
 
 namespace ergo {
@@ -135,6 +136,13 @@ Json SummaryJson(const RunSummary& s) {
     split["optimized"] = shares(s.optimized);
     j["region_shares"] = split;
   }
+  // How hard each design's equilibrium squeezes the tissue: a peak carried through tets past the
+  // material's inversion threshold is the law's extension, not tissue (tissue_compression.h).
+  Json compression = Json::object();
+  compression["initial"] = TissueCompressionJson(s.initial.compression);
+  compression["optimized"] =
+      s.optimized.evaluation.ok ? TissueCompressionJson(s.optimized.compression) : Json();
+  j["tissue_compression"] = compression;
   j["initial_peak_pressure_Pa"] = s.initial.peak_pressure;
   j["fresh_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
   j["optimized_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.peak_pressure));
@@ -275,6 +283,20 @@ std::string SummaryMarkdown(const RunSummary& s) {
           "al. 2011): "
        << (met ? "met" : "not met") << " — peak " << Format("%.1f", s.optimized.peak_pressure / 1e3)
        << " kPa, " << Format("%.1f", relief) << " % below the flat sole.\n\n";
+  }
+  {
+    const TissueCompression& a = s.initial.compression;
+    md << "Tissue past the material's inversion threshold (a principal stretch below "
+       << Format("%.2g", a.threshold) << ", more than " << Format("%.0f", 100 * (1 - a.threshold))
+       << " % compression, where the pressure is the law's numerical extension): "
+       << a.tets_beyond_threshold << " tets on the initial design (smallest stretch "
+       << Format("%.3g", a.min_principal_stretch) << ")";
+    if (fresh.ok) {
+      const TissueCompression& b = s.optimized.compression;
+      md << ", " << b.tets_beyond_threshold << " on the optimised one ("
+         << Format("%.3g", b.min_principal_stretch) << ")";
+    }
+    md << ".\n\n";
   }
   const std::vector<double>&before = s.initial.region_shares, &after = s.optimized.region_shares;
   if (!before.empty()) {
