@@ -108,17 +108,26 @@ def history(plt, out_dir):
     save(fig, os.path.join(out_dir, "phi_history.png"))
 
 
-def main():
-    if len(sys.argv) != 2:
-        print(__doc__, file=sys.stderr)
-        return 2
-    out_dir = sys.argv[1]
+def import_pyplot(script):
+    """matplotlib.pyplot drawing to files (Agg), or None after saying it is missing."""
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        print("plot_results.py: matplotlib is not installed (apt-get install python3-matplotlib)", file=sys.stderr)
+        print("%s: matplotlib is not installed (apt-get install python3-matplotlib)" % script,
+              file=sys.stderr)
+        return None
+    return plt
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    out_dir = sys.argv[1]
+    plt = import_pyplot("plot_results.py")
+    if plt is None:
         return 3
     with open(os.path.join(out_dir, "plot_data.json")) as f:
         data = json.load(f)

@@ -14,7 +14,7 @@ import json
 import os
 import sys
 
-from plot_results import mark_regions, save
+from plot_results import import_pyplot, mark_regions, save
 
 
 def load(out_dir):
@@ -78,13 +78,8 @@ def main():
         print(__doc__, file=sys.stderr)
         return 2
     out_dir = sys.argv[1]
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("plot_simulation.py: matplotlib is not installed (apt-get install python3-matplotlib)",
-              file=sys.stderr)
+    plt = import_pyplot("plot_simulation.py")
+    if plt is None:
         return 3
     try:
         data, skin, axes = load(out_dir)

@@ -37,6 +37,19 @@ std::string InputErrorMessage(F make) {
   return "";
 }
 
+// Two closed spheres of radius 0.2 in one mesh, their centres 0.15 apart: closed, manifold,
+// outward, but crossing each other.
+TriMesh TwoOverlappingSpheres() {
+  TriMesh two = MakeIcosphere(0.2, 2);
+  const TriMesh shifted = MakeIcosphere(0.2, 2, Vector3d(0.15, 0, 0));
+  const Eigen::Index n = two.vertices.rows(), m = two.triangles.rows();
+  two.vertices.conservativeResize(2 * n, 3);
+  two.vertices.bottomRows(n) = shifted.vertices;
+  two.triangles.conservativeResize(2 * m, 3);
+  two.triangles.bottomRows(m) = shifted.triangles.array() + static_cast<int>(n);
+  return two;
+}
+
 TriMesh TwoTetrahedra(bool share_edge) {
   // Two tetrahedra touching at one vertex (0) or along one edge (0-1).
   TriMesh mesh;
@@ -110,13 +123,8 @@ TEST(Contact, SupportRefusesOpenInconsistentAndDegenerateMeshes) {
   EXPECT_NE(message.find("vertex 4: non-finite"), std::string::npos) << message;
 
   // Two overlapping closed spheres in one mesh: closed, manifold, outward — but crossing.
-  TriMesh two = MakeIcosphere(0.2, 2);
-  const TriMesh shifted = MakeIcosphere(0.2, 2, Vector3d(0.15, 0, 0));
-  const Eigen::Index n = two.vertices.rows(), m = two.triangles.rows();
-  two.vertices.conservativeResize(2 * n, 3);
-  two.vertices.bottomRows(n) = shifted.vertices;
-  two.triangles.conservativeResize(2 * m, 3);
-  two.triangles.bottomRows(m) = shifted.triangles.array() + static_cast<int>(n);
+  TriMesh two = TwoOverlappingSpheres();
+  const Eigen::Index n = two.vertices.rows() / 2;
   message = InputErrorMessage([&] { Support s(two, "two.ply"); });
   EXPECT_NE(message.find("self-intersecting support: triangles"), std::string::npos) << message;
   // Apart, the two spheres are a valid support.
@@ -134,13 +142,7 @@ TEST(Contact, SupportRefusesOpenInconsistentAndDegenerateMeshes) {
 // passes.
 TEST(Support, ABuiltSkinThatTouchesItselfIsRefusedWithWhatToTry) {
   EXPECT_EQ(InputErrorMessage([&] { ValidateSkinForContact(MakeIcosphere(0.05, 2), "foot"); }), "");
-  TriMesh two = MakeIcosphere(0.2, 2);
-  const TriMesh shifted = MakeIcosphere(0.2, 2, Vector3d(0.15, 0, 0));
-  const Eigen::Index n = two.vertices.rows(), m = two.triangles.rows();
-  two.vertices.conservativeResize(2 * n, 3);
-  two.vertices.bottomRows(n) = shifted.vertices;
-  two.triangles.conservativeResize(2 * m, 3);
-  two.triangles.bottomRows(m) = shifted.triangles.array() + static_cast<int>(n);
+  const TriMesh two = TwoOverlappingSpheres();
   std::string message =
       InputErrorMessage([&] { ValidateSkinForContact(two, "foot.obj (the built body's skin)"); });
   EXPECT_NE(message.find("foot.obj (the built body's skin):triangles"), std::string::npos)
