@@ -2,9 +2,10 @@
 """Pictures of an ergo_simulate run: one equilibrium's skin pressure seen from the support.
 
 usage: plot_simulation.py DIR   (reads DIR/plot_data.json, writes
-    DIR/pressure_map.png        the skin's contact pressure seen from the support, its peak
-                                and the centre of pressure marked, and for a foot the
-                                rearfoot / midfoot / forefoot bands with their shares
+    DIR/pressure_map.png        the skin's contact pressure seen from the support, its peak,
+                                the centre of pressure and any tissue squeezed past its
+                                material law marked, and for a foot the rearfoot / midfoot /
+                                forefoot bands with their shares
     DIR/pressure_histogram.png  the pressures of the skin vertices in contact)
 Needs matplotlib (Debian: python3-matplotlib); exits 3 without it, 2 on a missing or unusable
 plot_data.json (with a message naming it). Writes each PNG to a temporary name first and
@@ -46,12 +47,17 @@ def pressure_map(plt, data, skin, axes, out_dir):
         i = kpa.index(peak)
         ax.plot(u[i], v[i], marker="^", color="tab:cyan", markersize=9, linestyle="none",
                 label="peak %.1f kPa" % peak)
+    crushed = data.get("crushed_points2d") or []
+    if crushed:
+        ax.plot([p[0] * 1e3 for p in crushed], [p[1] * 1e3 for p in crushed], marker="x",
+                color="deepskyblue", markersize=4, linestyle="none",
+                label="tissue past its law's range (%d tets)" % len(crushed))
     cop = data.get("centre_of_pressure2d")
     if cop:
         ax.plot(cop[0] * 1e3, cop[1] * 1e3, marker="+", color="tab:green", markersize=14,
                 markeredgewidth=2, linestyle="none", label="centre of pressure")
     mark_regions(ax, data.get("regions"), "share")
-    if peak > 0 or cop:
+    if peak > 0 or cop or crushed:
         ax.legend(loc="lower left", fontsize=8)
     ax.set_aspect("equal")
     ax.set_xlabel(axes[0] + " (mm)")

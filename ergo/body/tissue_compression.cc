@@ -25,7 +25,10 @@ TissueCompression MeasureTissueCompression(const LayeredBody& body, const BodySt
     const double stretch = RotationVariantSvd(f).sigma(2);  // the smallest, signed
     if (out.worst_tet < 0 || j < out.min_volume_ratio) out.min_volume_ratio = j;
     out.inverted_tets += j <= 0 ? 1 : 0;
-    out.tets_beyond_threshold += stretch < out.threshold ? 1 : 0;
+    if (stretch < out.threshold) {
+      ++out.tets_beyond_threshold;
+      out.beyond_threshold_points.push_back(x.rowwise().mean());
+    }
     if (out.worst_tet < 0 || stretch < out.min_principal_stretch) {
       out.min_principal_stretch = stretch;
       out.worst_tet = t;

@@ -6,6 +6,8 @@
 // equilibrium reports this, so that a crushed pad is not read as a pressure.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "ergo/body/body_state.h"
@@ -22,6 +24,8 @@ struct TissueCompression {
   // The tet with the smallest principal stretch: its index and deformed centroid, m.
   Eigen::Index worst_tet = -1;
   Eigen::Vector3d worst_point = Eigen::Vector3d::Zero();
+  // The deformed centroid of every tet beyond ε (for pictures), m.
+  std::vector<Eigen::Vector3d> beyond_threshold_points;
 };
 
 TissueCompression MeasureTissueCompression(const LayeredBody& body, const BodyState& state);

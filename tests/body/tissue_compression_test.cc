@@ -20,6 +20,7 @@ TEST(Body, TissueCompressionOfARigidMotionIsNone) {
     EXPECT_NEAR(c.min_principal_stretch, 1, 1e-12);
     EXPECT_EQ(c.tets_beyond_threshold, 0);
     EXPECT_EQ(c.inverted_tets, 0);
+    EXPECT_TRUE(c.beyond_threshold_points.empty());
     EXPECT_EQ(c.threshold, body.material().inversion_threshold);
     EXPECT_GE(c.worst_tet, 0);
   }
@@ -57,6 +58,8 @@ TEST(Body, TissueCompressionFindsATetSqueezedToAKnownStretch) {
     EXPECT_LE(squeezed.min_volume_ratio, s + 1e-12) << s;
     EXPECT_GE(squeezed.tets_beyond_threshold, 1) << s;
     EXPECT_EQ(squeezed.inverted_tets > 0, s < 0) << s;
+    EXPECT_EQ(static_cast<int>(squeezed.beyond_threshold_points.size()),
+              squeezed.tets_beyond_threshold);
     bool touches = false;
     for (int k = 0; k < 4; ++k) touches = touches || tets(squeezed.worst_tet, k) == vertex;
     EXPECT_TRUE(touches) << s;

@@ -142,6 +142,11 @@ TEST_F(ToolsSimulate, ACrushedLayerIsReportedWithWhereItIs) {
                z = worst.at(2).get<double>();
   EXPECT_LT(std::hypot(x, z), 0.02);
   EXPECT_NEAR(y, -0.06, 0.01);
+  // The pressure map marks each of those tets.
+  const Json plot = ReadJsonFile(*dir_ + "/crushed/plot_data.json");
+  EXPECT_EQ(
+      GetMember(plot, "crushed_points2d", "plot_data").size(),
+      GetMember(squeeze, "tets_beyond_inversion_threshold", "tissue_compression").get<size_t>());
 }
 
 // `ergo_mesh box` writes the slab the suite builds with MakeBox, vertex for vertex (its OBJ
@@ -211,6 +216,7 @@ TEST_F(ToolsSimulate, ThePressureMapIsTheSkinSeenFromTheSupportWithItsPictures) 
   const Json& cop = GetMember(data, "centre_of_pressure2d", "plot_data");
   EXPECT_LT(std::hypot(cop.at(0).get<double>(), cop.at(1).get<double>()), 1e-3);
   EXPECT_EQ(FindMember(data, "regions"), nullptr);  // a ball has no foot's bands
+  EXPECT_TRUE(GetMember(data, "crushed_points2d", "plot_data").empty());
   if (!FindPythonWithMatplotlib().empty()) {
     for (const char* png : {"pressure_map.png", "pressure_histogram.png"})
       EXPECT_GT(fs::file_size(out + "/" + png), 1000u) << png;

@@ -212,8 +212,8 @@ int Run() {
   if (solved.calibration)
     std::cout << "stiffness calibration: " << solved.calibration->BriefReport() << "\n";
   std::cout << result.FullReport() << "\n";
-  const std::string crushed =
-      DescribeTissueCompression(MeasureTissueCompression(body, result.state));
+  const TissueCompression compression = MeasureTissueCompression(body, result.state);
+  const std::string crushed = DescribeTissueCompression(compression);
   if (!crushed.empty()) std::cerr << "ergo_simulate: " << crushed << "\n";
   if (StopOnSignals::stopped()) {
     std::cerr << "ergo_simulate: interrupted before any result; nothing written\n";
@@ -251,10 +251,11 @@ int Run() {
   const bool touched = result.contact_vertices > 0 || result.contact_springs > 0;
   const bool calibrated = !solved.calibration || solved.calibration->converged;
   WriteJsonFile((out / "summary.json").string(), summary);
-  WriteJsonFile((out / "plot_data.json").string(),
-                SimulationPlotData(body, result.state, solved.pressures, length_reading, summary,
-                                   fs::path(FLAGS_body).filename().string() + " on " +
-                                       fs::path(support_source).filename().string()));
+  WriteJsonFile(
+      (out / "plot_data.json").string(),
+      SimulationPlotData(body, result.state, solved.pressures, compression, length_reading, summary,
+                         fs::path(FLAGS_body).filename().string() + " on " +
+                             fs::path(support_source).filename().string()));
   const bool plotted = FLAGS_plot && !StopOnSignals::stopped() &&
                        RunPictureScript("ergo_simulate", "plot_simulation.py", output.path());
   std::string error;

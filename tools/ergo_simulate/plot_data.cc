@@ -7,8 +7,9 @@
 namespace ergo {
 
 Json SimulationPlotData(const LayeredBody& body, const BodyState& state,
-                        const ContactPressures& pressures, const LengthReading& reading,
-                        const Json& summary, const std::string& title) {
+                        const ContactPressures& pressures, const TissueCompression& compression,
+                        const LengthReading& reading, const Json& summary,
+                        const std::string& title) {
   const PressureView view = ViewAlongLoad(body);
   Json data = Json::object();
   data["tool"] = "ergo_simulate";
@@ -19,6 +20,12 @@ Json SimulationPlotData(const LayeredBody& body, const BodyState& state,
   if (cop.normal_force > 0) {
     data["centre_of_pressure2d"] = Json::array({cop.point.dot(view.u), cop.point.dot(view.v)});
   }
+  // Where the tissue is squeezed past its material law (tissue_compression.h): its pressure
+  // there is the law's extension, and the map says so.
+  Json crushed = Json::array();
+  for (const Eigen::Vector3d& p : compression.beyond_threshold_points)
+    crushed.push_back(Json::array({p.dot(view.u), p.dot(view.v)}));
+  data["crushed_points2d"] = crushed;
   const Json* shares = nullptr;
   if (const Json* split = FindMember(summary, "region_shares"))
     shares = FindMember(*split, "shares");

@@ -1,10 +1,12 @@
 // The data behind ergo_simulate's pictures (OUT/plot_data.json, drawn by
 // tools/plot_simulation.py): the skin's contact pressure seen from the support, the centre of
-// pressure, and for a foot its length bands with their shares of the load.
+// pressure, where the tissue is squeezed past its material law, and for a foot its length bands
+// with their shares of the load.
 #pragma once
 
 #include "ergo/body/body_state.h"
 #include "ergo/body/layered_body.h"
+#include "ergo/body/tissue_compression.h"
 #include "ergo/ergonomics/contact_pressures.h"
 #include "ergo/mesh/json.h"
 #include "tools/ergo_simulate/length_reading.h"
@@ -14,7 +16,8 @@ namespace ergo {
 // `summary`: the run's summary.json, whose region_shares (when present) give the bands'
 // shares. `title`: a line naming the run for the pictures.
 Json SimulationPlotData(const LayeredBody& body, const BodyState& state,
-                        const ContactPressures& pressures, const LengthReading& reading,
-                        const Json& summary, const std::string& title);
+                        const ContactPressures& pressures, const TissueCompression& compression,
+                        const LengthReading& reading, const Json& summary,
+                        const std::string& title);
 
 }  // namespace ergo
