@@ -67,6 +67,11 @@ def test_equilibrium_carries_the_weight(ball):
     pressure = result["skin_pressure"]
     assert pressure.shape == (body.skin_vertices.size,) and (pressure >= 0).all()
     assert 0 < (pressure > 0).sum() < pressure.size
+    # A ball resting under its own weight squeezes its layer mildly: no tet near the material
+    # law's inversion threshold, and the summary says so.
+    squeeze = summary["tissue_compression"]
+    assert squeeze["tets_beyond_inversion_threshold"] == 0 and squeeze["inverted_tets"] == 0
+    assert 0.1 < squeeze["min_principal_stretch"] <= 1
     # The body rests on the box's top (y = 0): nothing is far inside.
     assert result["positions"][:, 1].min() > -1e-3
     assert result["contact_stiffness"] == 3e7
