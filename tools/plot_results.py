@@ -3,7 +3,8 @@
 
 usage: plot_results.py DIR   (reads DIR/plot_data.json and DIR/history.csv, writes
     DIR/pressure_maps.png        initial and optimised skin pressure, one colour scale,
-                                 seen from the support's side
+                                 seen from the support's side (tissue squeezed past its
+                                 material law's range marked)
     DIR/pressure_histograms.png  the two pressure histograms overlaid
     DIR/displacement.png         how far each support vertex moved, mm
     DIR/phi_history.png          phi/phi0 over iterations and evaluations)
@@ -37,6 +38,17 @@ def mark_regions(ax, regions, share_key):
                 va="center", ha="left", fontsize=8, transform=ax.get_yaxis_transform())
 
 
+def mark_crushed(ax, points):
+    """Where the tissue is squeezed past its material law's range (its pressure there is the
+    law's numerical extension): small crosses, with their count in the legend."""
+    if not points:
+        return
+    ax.plot([p[0] * 1e3 for p in points], [p[1] * 1e3 for p in points], marker="x",
+            color="deepskyblue", markersize=4, linestyle="none",
+            label="tissue past its law's range (%d tets)" % len(points))
+    ax.legend(loc="lower left", fontsize=8)
+
+
 def pressure_maps(plt, data, out_dir):
     initial, optimized = data["initial"]["skin"], data["optimized"]["skin"]
     top = max(max(initial["pressure"] or [0]), max(optimized["pressure"] or [0]), 1e-12) / 1e3
@@ -48,6 +60,7 @@ def pressure_maps(plt, data, out_dir):
         if skin["triangles"]:
             mesh = ax.tripcolor(u, v, skin["triangles"], kpa, shading="gouraud", cmap="inferno", vmin=0, vmax=top)
         ax.set_title("%s: peak %.2f kPa" % (title, max(kpa or [0])))
+        mark_crushed(ax, data["initial" if title == "initial" else "optimized"].get("crushed_points2d"))
         mark_regions(ax, data.get("regions"), "initial_share" if title == "initial" else "optimized_share")
         ax.set_aspect("equal")
         ax.set_xlabel(data["view"]["axes"][0] + " (mm)")

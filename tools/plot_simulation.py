@@ -15,7 +15,7 @@ import json
 import os
 import sys
 
-from plot_results import import_pyplot, mark_regions, save
+from plot_results import import_pyplot, mark_crushed, mark_regions, save
 
 
 def load(out_dir):
@@ -48,10 +48,7 @@ def pressure_map(plt, data, skin, axes, out_dir):
         ax.plot(u[i], v[i], marker="^", color="tab:cyan", markersize=9, linestyle="none",
                 label="peak %.1f kPa" % peak)
     crushed = data.get("crushed_points2d") or []
-    if crushed:
-        ax.plot([p[0] * 1e3 for p in crushed], [p[1] * 1e3 for p in crushed], marker="x",
-                color="deepskyblue", markersize=4, linestyle="none",
-                label="tissue past its law's range (%d tets)" % len(crushed))
+    mark_crushed(ax, crushed)
     cop = data.get("centre_of_pressure2d")
     if cop:
         ax.plot(cop[0] * 1e3, cop[1] * 1e3, marker="+", color="tab:green", markersize=14,

@@ -242,6 +242,10 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   // summary's shares.
   const Json plot = ReadJsonFile(dir + "/plot_data.json");
   const Json& bands = GetMember(plot, "regions", "plot_data");
+  // ... and mark every tet past the material's law (none here: see above).
+  EXPECT_EQ(
+      GetMember(GetMember(plot, "initial", "plot_data"), "crushed_points2d", "initial").size(),
+      GetMember(squeezed, "tets_beyond_inversion_threshold", "initial").get<size_t>());
   ASSERT_EQ(bands.size(), 3u);
   EXPECT_EQ(bands[0]["name"].get<std::string>(), "rearfoot");
   for (size_t k = 1; k < bands.size(); ++k)

@@ -92,6 +92,11 @@ Json PlotData(const Scenario& scenario, const DesignReport& initial,
     Json entry = Json::object();
     entry["skin"] = SkinPressureMap(body, report->evaluation.equilibrium.state,
                                     report->pressures.human.pressure, view);
+    // Tets squeezed past the material's law (tissue_compression.h), for the map to mark.
+    Json crushed = Json::array();
+    for (const Eigen::Vector3d& p : report->compression.beyond_threshold_points)
+      crushed.push_back(Json::array({p.dot(view.u), p.dot(view.v)}));
+    entry["crushed_points2d"] = crushed;
     data[name] = entry;
   }
   // The scenario's regions along z (the shoe's rearfoot, midfoot, forefoot) when the map's
