@@ -9,6 +9,7 @@
 #include "ergo/body/body_directory.h"
 #include "ergo/body/body_state.h"
 #include "ergo/body/core_lock.h"
+#include "ergo/contact/support_validation.h"
 #include "ergo/design/static_equilibrium.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
@@ -199,7 +200,6 @@ void BindBody(py::module_& m) {
         {
           py::gil_scoped_release release;
           built = BuildBody(options);
-          if (!directory.empty()) SaveBodyDirectory(directory, built.record);
           LayeredBodyOptions body_options;
           body_options.tissue_density = built.record.tissue_density;
           body_options.core_mass = built.record.core_mass;
@@ -207,6 +207,11 @@ void BindBody(py::module_& m) {
           body = std::make_shared<const LayeredBody>(
               LayeredBody::Create(built.record.rest, built.record.attached, built.record.material,
                                   body_options, directory.empty() ? "body" : directory));
+          // As `ergo_body build`: a skin that contact would refuse is refused now, unwritten.
+          ValidateSkinForContact(body->skin().RestSurface(body->rest().vertices),
+                                 (options.surface.empty() ? options.shape : options.surface) +
+                                     " (the built body's skin)");
+          if (!directory.empty()) SaveBodyDirectory(directory, built.record);
         }
         interrupt.RaiseIfInterrupted();
         return py::make_tuple(BodyHandle{body}, built.report, JsonToPython(built.record.summary));
