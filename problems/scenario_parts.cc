@@ -11,6 +11,7 @@
 #include "ergo/body/sample_interpolation.h"
 #include "ergo/body/tissue_fields.h"
 #include "ergo/contact/support.h"
+#include "ergo/contact/support_validation.h"
 #include "ergo/equilibrium/placement.h"
 #include "ergo/mesh/axis_map.h"
 #include "ergo/mesh/input_error.h"
@@ -214,6 +215,10 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
     SetTotalMass(input.total_mass, built.report.layer_volume, input.skin_surface, &options);
     body = std::make_shared<LayeredBody>(
         LayeredBody::Create(built.mesh, built.attached, material, options, input.skin_surface));
+    // As `ergo_body build`: a meshed skin that pinches or overlaps itself is refused with the
+    // point and the edge lengths to try (--body_edge_length here).
+    ValidateSkinForContact(body->skin().RestSurface(body->rest().vertices),
+                           input.skin_surface + " (the built body's skin)");
     line << "user skin " << input.skin_surface << " (depth " << depth.Describe() << ", E "
          << stiffness.Describe() << ")";
     if (fields.priors) line << "; anatomical priors: " << fields.priors->summary;

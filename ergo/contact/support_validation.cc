@@ -224,9 +224,10 @@ void ValidateSkinForContact(const TriMesh& skin, const std::string& source) {
                          "; the meshed skin touches or overlaps itself where two parts of the "
                          "surface (toes, fingers) come closer than the mesh resolves, and contact "
                          "cannot use it",
-                     "try another --edge_length (the shipped FIND foot builds at 0.005, 0.007, "
-                     "0.008 and 0.009 m but not at 0.006 or 0.010), or widen the gap between "
-                     "those parts in the scan");
+                     "try another edge length (ergo_body build's --edge_length, a scenario's "
+                     "--body_edge_length; the shipped FIND foot builds at 0.005, 0.007, 0.008 "
+                     "and 0.009 m but not at 0.006 or 0.010), or widen the gap between those "
+                     "parts in the scan");
   }
 }
 
