@@ -1,5 +1,6 @@
 #include "tools/common/flag_checks.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -124,6 +125,23 @@ void RequireInRange(const char* flag, double value, double low, double high,
     what << "is " << value << "; it must be a finite number in [" << low << ", " << high << "]";
     throw InputError(std::string("--") + flag, "", what.str(), fix);
   }
+}
+
+Eigen::Vector3d ParseThreeNumbers(const std::string& flag, const std::string& text,
+                                  const std::string& example) {
+  const std::vector<std::string> items = SplitList(text, ',');
+  Eigen::Vector3d v;
+  bool ok = items.size() == 3;
+  for (size_t k = 0; ok && k < 3; ++k) {
+    char* end = nullptr;
+    v[k] = std::strtod(items[k].c_str(), &end);
+    ok = end != items[k].c_str() && *end == '\0' && std::isfinite(v[k]);
+  }
+  if (!ok) {
+    throw InputError("--" + flag, "", "'" + text + "' is not three finite numbers",
+                     "write X,Y,Z, e.g. --" + flag + "=" + example);
+  }
+  return v;
 }
 
 void RequireInRange(const char* flag, long value, long low, long high, const std::string& fix) {

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <string>
 
+#include <Eigen/Core>
+
 namespace ergo {
 
 // Throws InputError for the first problem in argv (and the flagfiles it names).
@@ -23,6 +25,11 @@ void RequireInRange(const char* flag, double value, double low, double high,
                     const std::string& fix);
 // The same for integers.
 void RequireInRange(const char* flag, long value, long low, long high, const std::string& fix);
+
+// "X,Y,Z" given to --flag: exactly three finite numbers, else InputError naming --flag with
+// what it got and `example` (a value to write, e.g. "0,-300,0").
+Eigen::Vector3d ParseThreeNumbers(const std::string& flag, const std::string& text,
+                                  const std::string& example);
 
 // Sends glog's output to stderr only (no log files in /tmp), before InitGoogleLogging.
 void LogToStderrOnly();

@@ -25,7 +25,6 @@
 #include "ergo/contact/support_validation.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/length_unit.h"
-#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/vtu_flags.h"
 
@@ -84,21 +83,12 @@ constexpr char kUsage[] =
 bool Given(const char* name) { return !gflags::GetCommandLineFlagInfoOrDie(name).is_default; }
 
 Eigen::Vector3d ParseTriple(const std::string& flag, const std::string& text) {
-  std::vector<double> values;
-  for (const std::string& item : SplitList(text, ',')) {
-    try {
-      size_t used = 0;
-      values.push_back(std::stod(item, &used));
-      if (used != item.size()) values.push_back(NAN);
-    } catch (const std::exception&) {
-      values.push_back(NAN);
-    }
-  }
-  if (values.size() != 3 || !(values[0] > 0 && values[1] > 0 && values[2] > 0)) {
+  const Eigen::Vector3d values = ParseThreeNumbers(flag, text, "0.12,0.08,0.06");
+  if (!(values.minCoeff() > 0)) {
     FlagError(flag, "expected three positive lengths a,b,c (got \"" + text + "\")",
               "give e.g. --" + flag + "=0.12,0.08,0.06");
   }
-  return Eigen::Vector3d(values[0], values[1], values[2]);
+  return values;
 }
 
 // A body no tool could use is not written: contact refuses a skin that pinches or overlaps

@@ -14,10 +14,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <string>
-#include <vector>
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
@@ -27,7 +25,6 @@
 #include "ergo/mesh/mesh_check.h"
 #include "ergo/mesh/mesh_io.h"
 #include "ergo/mesh/primitives.h"
-#include "ergo/mesh/split_list.h"
 #include "tools/common/flag_checks.h"
 
 DEFINE_bool(closed, false, "check: the surface must be closed (open boundary is a problem)");
@@ -82,35 +79,19 @@ int Convert(const std::string& in, const std::string& out) {
   return 0;
 }
 
-// Three numbers from a flag's "A,B,C"; `integer` asks for whole numbers 1..1000.
-Eigen::Vector3d ThreeNumbers(const std::string& flag, const std::string& text, bool integer) {
-  const std::vector<std::string> items = ergo::SplitList(text, ',');
-  Eigen::Vector3d v;
-  bool ok = items.size() == 3;
-  for (size_t k = 0; ok && k < 3; ++k) {
-    char* end = nullptr;
-    v[k] = std::strtod(items[k].c_str(), &end);
-    ok = end != items[k].c_str() && *end == '\0' && std::isfinite(v[k]) &&
-         (!integer || (v[k] == std::floor(v[k]) && v[k] >= 1 && v[k] <= 1000));
-  }
-  if (!ok) {
-    throw ergo::InputError(
-        "--" + flag, "",
-        "'" + text + "' is not three " + (integer ? "whole numbers 1..1000" : "finite numbers"),
-        integer ? "e.g. --cells=30,1,50"
-                : "write X,Y,Z in metres, e.g. --" + flag + "=-0.15,-0.1,-0.25");
-  }
-  return v;
-}
-
 int Box(const std::string& out) {
   if (FLAGS_lo.empty() || FLAGS_hi.empty())
     throw ergo::InputError("--lo", "", "and --hi are required for box",
                            "e.g. --lo=-0.15,-0.1,-0.25 --hi=0.15,-0.08,0.25");
-  const Eigen::Vector3d lo = ThreeNumbers("lo", FLAGS_lo, false);
-  const Eigen::Vector3d hi = ThreeNumbers("hi", FLAGS_hi, false);
-  const Eigen::Vector3d cells = ThreeNumbers("cells", FLAGS_cells, true);
+  const Eigen::Vector3d lo = ergo::ParseThreeNumbers("lo", FLAGS_lo, "-0.15,-0.1,-0.25");
+  const Eigen::Vector3d hi = ergo::ParseThreeNumbers("hi", FLAGS_hi, "0.15,-0.08,0.25");
+  const Eigen::Vector3d cells = ergo::ParseThreeNumbers("cells", FLAGS_cells, "30,1,50");
   for (int k = 0; k < 3; ++k) {
+    if (cells[k] != std::floor(cells[k]) || cells[k] < 1 || cells[k] > 1000) {
+      throw ergo::InputError("--cells", "",
+                             "'" + FLAGS_cells + "' is not three whole numbers 1..1000",
+                             "e.g. --cells=30,1,50");
+    }
     if (!(hi[k] > lo[k])) {
       throw ergo::InputError("--hi", "", std::string("is not above --lo along ") + "xyz"[k],
                              "give the smallest corner as --lo and the largest as --hi");
