@@ -127,7 +127,8 @@ std::string DescribeTissueCompression(const TissueCompression& c) {
 }
 
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
-                        const ContactPressures& pressures, double contact_stiffness) {
+                        const ContactPressures& pressures, double contact_stiffness,
+                        const TissueCompression& compression) {
   const PressureStatistics human =
       ComputePressureStatistics(pressures.human.pressure, body.skin().rest_areas);
   const PressureStatistics support =
@@ -158,7 +159,7 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
     json["centre_of_pressure_m"] = Vector3Json(cop.point);
     json["centre_of_pressure_z_fraction"] = cop.z_fraction;
   }
-  json["tissue_compression"] = TissueCompressionJson(MeasureTissueCompression(body, result.state));
+  json["tissue_compression"] = TissueCompressionJson(compression);
   json["energy_J"] = result.energy;
   json["zeta_human"] = pressures.human.cost;
   json["zeta_support"] = pressures.support.cost;

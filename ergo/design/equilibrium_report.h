@@ -54,9 +54,10 @@ std::string DescribeTissueCompression(const TissueCompression& compression);
 // contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,
 // contact_area_m2, mean_pressure_Pa, p95_pressure_Pa, contact_stiffness_Pa_per_m (κ),
 // centre_of_pressure_m and centre_of_pressure_z_fraction (centre_of_pressure.h),
-// tissue_compression (tissue_compression.h), energy_J, the time
+// tissue_compression (`compression`, of result.state: tissue_compression.h), energy_J, the time
 // split, and the support side's peak pressure and contact vertex count.
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
-                        const ContactPressures& pressures, double contact_stiffness);
+                        const ContactPressures& pressures, double contact_stiffness,
+                        const TissueCompression& compression);
 
 }  // namespace ergo

@@ -141,8 +141,9 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
   // A soft support's contact quadrature is over its rest areas (TotalPotential).
   solved.pressures = evaluator.Evaluate(solver.last_evaluation().contacts,
                                         solver.potential().ContactSurface(support).vertex_areas());
-  solved.summary =
-      EquilibriumSummary(body, solved.result, solved.pressures, solved.contact_stiffness);
+  solved.compression = MeasureTissueCompression(body, solved.result.state);
+  solved.summary = EquilibriumSummary(body, solved.result, solved.pressures,
+                                      solved.contact_stiffness, solved.compression);
   if (solved.calibration) {
     Json calibration = Json::object();
     calibration["converged"] = solved.calibration->converged;

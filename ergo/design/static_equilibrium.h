@@ -19,6 +19,7 @@
 
 #include "ergo/body/elastic_part.h"
 #include "ergo/body/layered_body.h"
+#include "ergo/body/tissue_compression.h"
 #include "ergo/contact/stiffness_calibration.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/ergonomics/contact_pressures.h"
@@ -58,10 +59,11 @@ struct StaticEquilibrium {
   EquilibriumResult result;                      // the final, reported solve
   std::optional<CalibrationResult> calibration;  // when κ was calibrated
   double contact_stiffness = 0;                  // κ used by `result`, Pa/m
-  bool placed_found = true;    // false: the body meets the support nowhere along its load
-  bool out_of_time = false;    // max_seconds ran out
-  ContactPressures pressures;  // skin and support pressures and forces of `result`
-  Json summary;                // EquilibriumSummary + calibration, contact, lock
+  bool placed_found = true;       // false: the body meets the support nowhere along its load
+  bool out_of_time = false;       // max_seconds ran out
+  ContactPressures pressures;     // skin and support pressures and forces of `result`
+  TissueCompression compression;  // how hard `result` squeezes the tissue
+  Json summary;                   // EquilibriumSummary + calibration, contact, lock
 
   // Converged, touching the support, and (when calibrating) at the target penetration.
   bool ok() const;

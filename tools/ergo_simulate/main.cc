@@ -30,7 +30,6 @@
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/length_unit.h"
 #include "ergo/mesh/mesh_io.h"
-#include "ergo/mesh/split_list.h"
 #include "tools/common/child_process.h"
 #include "tools/common/flag_checks.h"
 #include "tools/common/output_directory.h"
@@ -82,24 +81,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Eigen::Vector3d ParseVector(const std::string& text, const std::string& flag) {
-  Eigen::Vector3d v;
-  int k = 0;
-  for (const std::string& item : SplitList(text, ',')) {
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (k >= 3 || end == item.c_str() || *end != '\0' || !std::isfinite(value)) {
-      throw InputError("--" + flag, "", "'" + text + "' is not three finite numbers",
-                       "write X,Y,Z, e.g. 0,-300,0");
-    }
-    v[k++] = value;
-  }
-  if (k != 3)
-    throw InputError("--" + flag, "", "'" + text + "' is not three numbers",
-                     "write X,Y,Z, e.g. 0,-300,0");
-  return v;
-}
-
 void Require(const std::string& value, const std::string& flag) {
   if (value.empty()) throw InputError("--" + flag, "", "is required", "see ergo_simulate --help");
 }
@@ -148,9 +129,9 @@ int Run() {
   if (FLAGS_threads > 0) omp_set_num_threads(FLAGS_threads);
 
   LayeredBodyOptions scenario;
-  scenario.gravity = ParseVector(FLAGS_gravity, "gravity");
-  scenario.external_force = ParseVector(FLAGS_external_force, "external_force");
-  scenario.external_torque = ParseVector(FLAGS_external_torque, "external_torque");
+  scenario.gravity = ParseThreeNumbers("gravity", FLAGS_gravity, "0,-9.81,0");
+  scenario.external_force = ParseThreeNumbers("external_force", FLAGS_external_force, "0,-300,0");
+  scenario.external_torque = ParseThreeNumbers("external_torque", FLAGS_external_torque, "0,0,1.5");
   scenario.lock = ParseCoreLock(FLAGS_lock, "--lock");
   if (scenario.gravity.norm() == 0 && scenario.external_force.norm() == 0) {
     throw InputError("--gravity", "",
@@ -212,7 +193,7 @@ int Run() {
   if (solved.calibration)
     std::cout << "stiffness calibration: " << solved.calibration->BriefReport() << "\n";
   std::cout << result.FullReport() << "\n";
-  const TissueCompression compression = MeasureTissueCompression(body, result.state);
+  const TissueCompression& compression = solved.compression;
   const std::string crushed = DescribeTissueCompression(compression);
   if (!crushed.empty()) std::cerr << "ergo_simulate: " << crushed << "\n";
   if (StopOnSignals::stopped()) {

@@ -1,6 +1,5 @@
 #include "tools/ergo_simulate/plot_data.h"
 
-#include "ergo/design/centre_of_pressure.h"
 #include "ergo/design/lengthwise_shares.h"
 #include "tools/common/pressure_view.h"
 
@@ -16,9 +15,10 @@ Json SimulationPlotData(const LayeredBody& body, const BodyState& state,
   data["title"] = title;
   data["view"] = ViewJson(view);
   data["skin"] = SkinPressureMap(body, state, pressures.human.pressure, view);
-  const CentreOfPressure cop = ComputeCentreOfPressure(body, state, pressures.contacts);
-  if (cop.normal_force > 0) {
-    data["centre_of_pressure2d"] = Json::array({cop.point.dot(view.u), cop.point.dot(view.v)});
+  if (const Json* point = FindMember(summary, "centre_of_pressure_m")) {  // when in contact
+    const Eigen::Vector3d cop(point->at(0).get<double>(), point->at(1).get<double>(),
+                              point->at(2).get<double>());
+    data["centre_of_pressure2d"] = Json::array({cop.dot(view.u), cop.dot(view.v)});
   }
   // Where the tissue is squeezed past its material law (tissue_compression.h): its pressure
   // there is the law's extension, and the map says so.

@@ -13,8 +13,8 @@
 
 namespace ergo {
 
-// `summary`: the run's summary.json, whose region_shares (when present) give the bands'
-// shares. `title`: a line naming the run for the pictures.
+// `summary`: the run's summary.json, whose centre_of_pressure_m and region_shares (when
+// present) the map marks. `title`: a line naming the run for the pictures.
 Json SimulationPlotData(const LayeredBody& body, const BodyState& state,
                         const ContactPressures& pressures, const TissueCompression& compression,
                         const LengthReading& reading, const Json& summary,
