@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -19,6 +18,13 @@
 
 namespace ergo {
 namespace {
+
+// " (at (x, y, z) m)": where a finding is, for people to find it in their model.
+std::string AtPoint(const Eigen::Vector3d& p) {
+  char text[128];
+  std::snprintf(text, sizeof text, " (at (%.4g, %.4g, %.4g) m)", p.x(), p.y(), p.z());
+  return text;
+}
 
 std::string EdgeName(int a, int b) {
   return "edge (" + std::to_string(std::min(a, b)) + ", " + std::to_string(std::max(a, b)) + ")";
@@ -139,7 +145,8 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
     if (walked != valence[v]) {
       throw InputError(source, "vertex " + std::to_string(v),
                        "non-manifold vertex: its " + std::to_string(valence[v]) +
-                           " triangles form more than one fan (the surface pinches there)",
+                           " triangles form more than one fan (the surface pinches there)" +
+                           AtPoint(mesh.vertices.row(v).transpose()),
                        "give each sheet of the surface its own copy of the vertex, or separate "
                        "the sheets");
     }
@@ -161,6 +168,11 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
   const SelfIntersections crossings = FindSelfIntersections(mesh, budget);
   if (crossings.checked && !crossings.pairs.empty()) {
     std::ostringstream what;
+    const auto& corners = mesh.triangles.row(crossings.pairs[0].first);
+    const Eigen::Vector3d centroid = (mesh.vertices.row(corners[0]) +
+                                      mesh.vertices.row(corners[1]) + mesh.vertices.row(corners[2]))
+                                         .transpose() /
+                                     3;
     what << "self-intersecting support: triangles " << crossings.pairs[0].first << " and "
          << crossings.pairs[0].second << " intersect";
     if (crossings.pairs.size() > 1) {
@@ -168,6 +180,7 @@ void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
            << crossings.pairs.size() - 1 << " more pair" << (crossings.pairs.size() > 2 ? "s" : "")
            << ")";
     }
+    what << AtPoint(centroid);
     throw InputError(source,
                      "triangles " + std::to_string(crossings.pairs[0].first) + " and " +
                          std::to_string(crossings.pairs[0].second),
@@ -196,31 +209,8 @@ void ValidateSkinForContact(const TriMesh& skin, const std::string& source) {
   try {
     ValidateSupportMesh(skin, source);
   } catch (const InputError& error) {
-    // Where, in metres: the vertex, or the first triangle's centroid ("triangles A and B").
-    std::string where;
-    auto format = [](const Eigen::Vector3d& p) {
-      char text[96];
-      std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x(), p.y(), p.z());
-      return std::string(text);
-    };
-    long index = -1;
-    const std::string& location = error.location();
-    if (location.rfind("vertex ", 0) == 0) index = std::strtol(location.c_str() + 7, nullptr, 10);
-    if (location.rfind("triangles ", 0) == 0) {
-      const long f = std::strtol(location.c_str() + 10, nullptr, 10);
-      if (f >= 0 && f < skin.triangles.rows()) {
-        const Eigen::Vector3d centroid =
-            (skin.vertices.row(skin.triangles(f, 0)) + skin.vertices.row(skin.triangles(f, 1)) +
-             skin.vertices.row(skin.triangles(f, 2)))
-                .transpose() /
-            3;
-        where = format(centroid);
-      }
-    } else if (index >= 0 && index < skin.vertices.rows()) {
-      where = format(skin.vertices.row(index).transpose());
-    }
     throw InputError(error.source(), error.location(),
-                     error.problem() + (where.empty() ? "" : " (at " + where + " m)") +
+                     error.problem() +
                          "; the meshed skin touches or overlaps itself where two parts of the "
                          "surface (toes, fingers) come closer than the mesh resolves, and contact "
                          "cannot use it",

@@ -17,7 +17,8 @@ namespace ergo {
 inline constexpr double kDegenerateTriangleRatio = 1e-12;
 
 // Throws InputError naming `source` (a file or a description), the offending triangle /
-// edge / vertex, what is wrong and the fix. Returns normally if `mesh` can be a support.
+// edge / vertex (for a pinched vertex and a self-intersection also its point in metres), what
+// is wrong and the fix. Returns normally if `mesh` can be a support.
 // `self_intersection` is the budget of the self-intersection test (its max_pairs is ignored).
 void ValidateSupportMesh(const TriMesh& mesh, const std::string& source,
                          const SelfIntersectionOptions& self_intersection = {});

@@ -127,6 +127,7 @@ TEST(Contact, SupportRefusesOpenInconsistentAndDegenerateMeshes) {
   const Eigen::Index n = two.vertices.rows() / 2;
   message = InputErrorMessage([&] { Support s(two, "two.ply"); });
   EXPECT_NE(message.find("self-intersecting support: triangles"), std::string::npos) << message;
+  EXPECT_NE(message.find(" m) (fix:"), std::string::npos) << message;  // where, in metres
   // Apart, the two spheres are a valid support.
   two.vertices.bottomRows(n).col(0).array() += 1.0;
   EXPECT_EQ(InputErrorMessage([&] { Support s(two, "two.ply"); }), "");
