@@ -126,6 +126,14 @@ std::string DescribeTissueCompression(const TissueCompression& c) {
   return line;
 }
 
+Json PlatePeakJson(const PlatePeak& peak, const PlatePeakOptions& options) {
+  Json json = Json::object();
+  json["pressure_Pa"] = peak.pressure;
+  json["pitch_m"] = options.pitch;
+  json["cell_centre_xz_m"] = Json::array({peak.point.x(), peak.point.y()});
+  return json;
+}
+
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,
                         const ContactPressures& pressures, double contact_stiffness,
                         const TissueCompression& compression) {
@@ -158,6 +166,10 @@ Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result
   if (cop.normal_force > 0) {
     json["centre_of_pressure_m"] = Vector3Json(cop.point);
     json["centre_of_pressure_z_fraction"] = cop.z_fraction;
+  }
+  if (LoadSeenAlongY(body.TotalLoad())) {
+    json["plate_peak"] = PlatePeakJson(ComputePlatePeak(
+        SkinMapFromBelow(body, DeformedPositions(body, result.state), pressures.human.pressure)));
   }
   json["tissue_compression"] = TissueCompressionJson(compression);
   json["energy_J"] = result.energy;

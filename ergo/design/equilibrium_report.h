@@ -11,6 +11,7 @@
 #include "ergo/body/tissue_compression.h"
 #include "ergo/equilibrium/equilibrium_solver.h"
 #include "ergo/ergonomics/contact_pressures.h"
+#include "ergo/ergonomics/plate_reading.h"
 #include "ergo/mesh/json.h"
 #include "ergo/mesh/vtu_writer.h"
 
@@ -50,10 +51,15 @@ Json TissueCompressionJson(const TissueCompression& compression);
 // threshold (where they are, what it means); "" otherwise.
 std::string DescribeTissueCompression(const TissueCompression& compression);
 
+// "plate_peak" of a summary: pressure_Pa, pitch_m, cell_centre_xz_m (plate_reading.h).
+Json PlatePeakJson(const PlatePeak& peak, const PlatePeakOptions& options = {});
+
 // The summary of an equilibrium: converged, status, reason, iterations, residual_N,
 // contact_vertices, max_penetration_m, total_contact_force_N, load_N, peak_pressure_Pa,
 // contact_area_m2, mean_pressure_Pa, p95_pressure_Pa, contact_stiffness_Pa_per_m (κ),
-// centre_of_pressure_m and centre_of_pressure_z_fraction (centre_of_pressure.h),
+// centre_of_pressure_m and centre_of_pressure_z_fraction (centre_of_pressure.h), plate_peak
+// (the largest cell a 5 mm pressure plate under the skin would read; when the load acts within
+// 10° of −y),
 // tissue_compression (`compression`, of result.state: tissue_compression.h), energy_J, the time
 // split, and the support side's peak pressure and contact vertex count.
 Json EquilibriumSummary(const LayeredBody& body, const EquilibriumResult& result,

@@ -7,6 +7,7 @@
 
 #include <glog/logging.h>
 
+#include "ergo/ergonomics/plate_reading.h"
 #include "ergo/ergonomics/pressure_map_alignment.h"
 
 namespace ergo {
@@ -26,32 +27,11 @@ SyntheticPlate MakeSyntheticPlate(const PlanarPressureMap& truth,
   const RigidMotion2d placed =
       RigidMotion2d::About(PressureCentroid(truth), options.rotation, options.shift);
   const PlanarPressureMap moved = truth.Moved(placed);
-  Eigen::Vector2d lower, upper;
-  moved.Bounds(&lower, &upper);
-  const double h = options.pitch;
-  const Eigen::Vector2d corner = lower - options.margin_cells * h * Eigen::Vector2d::Ones();
-  const auto columns =
-      static_cast<Eigen::Index>(std::ceil((upper.x() - lower.x()) / h)) + 2 * options.margin_cells;
-  const auto rows =
-      static_cast<Eigen::Index>(std::ceil((upper.y() - lower.y()) / h)) + 2 * options.margin_cells;
   SyntheticPlate plate;
-  plate.grid.pitch = h;
-  plate.grid.pressure = Eigen::MatrixXd::Zero(rows, columns);
-  const int n = options.subsamples;
-  for (Eigen::Index r = 0; r < rows; ++r) {
-    for (Eigen::Index c = 0; c < columns; ++c) {
-      double sum = 0;
-      for (int b = 0; b < n; ++b) {
-        for (int a = 0; a < n; ++a) {
-          const Eigen::Vector2d q =
-              corner + h * Eigen::Vector2d(static_cast<double>(c) + (a + 0.5) / n,
-                                           static_cast<double>(r) + (b + 0.5) / n);
-          sum += moved.PressureAt(q);
-        }
-      }
-      plate.grid.pressure(r, c) = sum / (n * n);
-    }
-  }
+  plate.grid = ReadOnCoveringPlate(moved, options.pitch, Eigen::Vector2d::Zero(),
+                                   options.margin_cells, options.subsamples);
+  const Eigen::Vector2d corner = plate.grid.origin;
+  plate.grid.origin = Eigen::Vector2d::Zero();  // the plate's own frame
   if (options.noise > 0) {
     std::mt19937 random(options.seed);
     std::normal_distribution<double> normal(0.0, options.noise * plate.grid.pressure.maxCoeff());

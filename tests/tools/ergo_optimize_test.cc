@@ -238,6 +238,20 @@ TEST(ToolsOptimize, QuickShoeLowersTheFreshScoreAndWritesEveryOutput) {
   EXPECT_GT(GetNumber(squeezed, "min_principal_stretch", "initial"), 0.1);
   EXPECT_LT(GetNumber(squeezed, "min_principal_stretch", "initial"), 1);
   EXPECT_NE(Read(dir + "/summary.md").find("0 tets on the initial design"), std::string::npos);
+  // A 5 mm plate under the flat sole reads below ergo's per-vertex peak: its cells average the
+  // peak's surroundings, and it divides by the stretched skin's area seen from below where ergo
+  // divides by the rest area (measured 2026-12-07: about 140 kPa against 294 kPa).
+  const Json& plate = GetMember(summary, "plate_peak_pressure_Pa", "summary");
+  const double plate_initial = GetNumber(plate, "initial", "plate_peak_pressure_Pa");
+  EXPECT_GT(plate_initial, 0);
+  EXPECT_LT(plate_initial, GetNumber(summary, "initial_peak_pressure_Pa", "summary"));
+  EXPECT_GT(GetNumber(plate, "fresh", "plate_peak_pressure_Pa"), 0);
+  EXPECT_NE(Read(dir + "/summary.md").find("| peak a 5 mm plate reads (kPa) |"), std::string::npos);
+  // The clinical criterion's thresholds are sensor readings, so it reads the plate's peak.
+  const Json& offloading = GetMember(summary, "offloading", "summary");
+  EXPECT_EQ(offloading["reading"].get<std::string>(), "5 mm plate");
+  EXPECT_EQ(GetNumber(offloading, "initial_peak_Pa", "offloading"), plate_initial);
+  EXPECT_NE(Read(dir + "/summary.md").find("on the peak a 5 mm plate reads:"), std::string::npos);
   // The pressure maps mark the same bands: contiguous along z from the heel, carrying the
   // summary's shares.
   const Json plot = ReadJsonFile(dir + "/plot_data.json");

@@ -111,6 +111,18 @@ TEST_F(ToolsSimulate, CalibratedRunBalancesTheLoadAndWritesEveryOutput) {
   EXPECT_GT(GetNumber(summary, "peak_pressure_Pa", "summary"), 0);
   EXPECT_GT(GetNumber(summary, "contact_area_m2", "summary"), 0);
   EXPECT_GT(GetNumber(summary, "contact_stiffness_Pa_per_m", "summary"), 0);
+  // A 5 mm plate under the ball reads its largest cell under the centre of pressure (the ball
+  // presses symmetrically about it), within a pitch; and the run says what it read.
+  const Json& plate = GetMember(summary, "plate_peak", "summary");
+  EXPECT_GT(GetNumber(plate, "pressure_Pa", "plate_peak"), 0);
+  EXPECT_EQ(GetNumber(plate, "pitch_m", "plate_peak"), 0.005);
+  const Json& cell = GetMember(plate, "cell_centre_xz_m", "plate_peak");
+  const Json& cop = GetMember(summary, "centre_of_pressure_m", "summary");
+  EXPECT_LE(std::hypot(cell.at(0).get<double>() - cop.at(0).get<double>(),
+                       cell.at(1).get<double>() - cop.at(2).get<double>()),
+            0.005);
+  EXPECT_NE(run.output.find("a 5 mm pressure plate under the skin would read"), std::string::npos)
+      << run.output;
   // The ball's own weight squeezes its layer mildly: nothing near the material's threshold.
   const Json& squeeze = GetMember(summary, "tissue_compression", "summary");
   EXPECT_EQ(GetNumber(squeeze, "tets_beyond_inversion_threshold", "tissue_compression"), 0);

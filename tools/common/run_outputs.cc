@@ -7,6 +7,7 @@
 
 #include "ergo/design/equilibrium_report.h"
 #include "ergo/design/lengthwise_shares.h"
+#include "ergo/ergonomics/plate_reading.h"
 #include "ergo/ergonomics/pressure_statistics.h"
 #include "ergo/mesh/mesh_io.h"
 #include "tools/common/pressure_view.h"
@@ -24,10 +25,16 @@ DesignReport ReportEvaluation(const DesignProblem& problem, const Eigen::VectorX
       ComputePressureStatistics(report.pressures.human.pressure, problem.body().skin().rest_areas);
   report.peak_pressure = skin.peak;
   report.skin_contact_area = skin.contact_area;
-  report.compression =
-      MeasureTissueCompression(problem.body(), report.evaluation.equilibrium.state);
-  report.centre_of_pressure = ComputeCentreOfPressure(
-      problem.body(), report.evaluation.equilibrium.state, report.pressures.contacts);
+  const BodyState& state = report.evaluation.equilibrium.state;
+  report.compression = MeasureTissueCompression(problem.body(), state);
+  if (LoadSeenAlongY(problem.body().TotalLoad())) {
+    report.plate_peak_pressure =
+        ComputePlatePeak(SkinMapFromBelow(problem.body(), DeformedPositions(problem.body(), state),
+                                          report.pressures.human.pressure))
+            .pressure;
+  }
+  report.centre_of_pressure =
+      ComputeCentreOfPressure(problem.body(), state, report.pressures.contacts);
   if (!regions.names.empty()) {
     report.region_shares = ComputeLengthwiseShares(problem.body(), report.pressures.contacts,
                                                    regions.ends, regions.from_min_z)

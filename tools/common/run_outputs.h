@@ -5,6 +5,7 @@
 // written atomically.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,10 @@ struct DesignReport {
   TriMesh support;
   DesignEvaluation evaluation;
   ContactPressures pressures;
-  double peak_pressure = 0;             // skin side, Pa
+  double peak_pressure = 0;  // skin side, Pa
+  // The largest cell a 5 mm pressure plate under the skin would read (plate_reading.h), Pa; NaN
+  // when the load is not seen along y.
+  double plate_peak_pressure = std::numeric_limits<double>::quiet_NaN();
   double skin_contact_area = 0;         // Σ rest areas of skin vertices in contact, m²
   CentreOfPressure centre_of_pressure;  // of the skin's contact forces (centre_of_pressure.h)
   // The load's split over the scenario's regions (lengthwise_shares.h), one share per region;

@@ -226,6 +226,13 @@ int Run() {
   const std::string length_line =
       ReportLengthReading(length_reading, body, result.state, solved.pressures.contacts, &summary);
   if (!length_line.empty()) std::cout << length_line << "\n";
+  std::cout << "peak skin pressure " << summary["peak_pressure_Pa"].get<double>() / 1e3 << " kPa";
+  if (summary.contains("plate_peak")) {
+    std::cout << "; a 5 mm pressure plate under the skin would read "
+              << summary["plate_peak"]["pressure_Pa"].get<double>() / 1e3
+              << " kPa at its largest cell";
+  }
+  std::cout << "\n";
   summary["body_directory"] = FLAGS_body;
   summary["support_file"] = support_source;
   summary["support_model"] = DescribeSoftSupportFlags();

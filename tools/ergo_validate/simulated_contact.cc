@@ -5,20 +5,13 @@
 #include <sstream>
 
 #include "ergo/body/body_state.h"
+#include "ergo/ergonomics/plate_reading.h"
 #include "ergo/mesh/input_error.h"
 #include "tools/common/design_flags.h"
 #include "tools/common/run_signals.h"
 #include "tools/common/scenario_flags.h"
 
 namespace ergo {
-namespace {
-
-// Maps are compared seen along y; a load more than 10° off −y would foreshorten them by more
-// than 1.5 % (1 − cos 10°) and move the footprint's projection by more than its tilt allows.
-constexpr double kMinLoadAlongY = 0.985;  // cos 10°
-
-}  // namespace
-
 bool ParseSimulatedSide(const std::string& name, SimulatedSide* side) {
   for (SimulatedSide s : {SimulatedSide::kSkin, SimulatedSide::kSupport}) {
     if (name == SimulatedSideName(s)) {
@@ -44,7 +37,7 @@ Scenario PrepareScenario() {
 double SceneLoad(const Scenario& scenario) {
   const Eigen::Vector3d load = scenario.body->TotalLoad();
   const double magnitude = load.norm();
-  if (!(magnitude > 0) || -load.y() < kMinLoadAlongY * magnitude) {
+  if (!LoadSeenAlongY(load)) {
     std::ostringstream what;
     what << "the scene's load (" << load.transpose()
          << ") N does not act along -y: ergo_validate compares maps seen along y";
@@ -70,12 +63,8 @@ PlanarPressureMap SimulatedPressureMap(const Scenario& scenario, const DesignRep
                                           PlanarPressureMap::Facing::kUp);
   }
   const LayeredBody& body = *scenario.body;
-  const Vertices positions = DeformedPositions(body, report.evaluation.equilibrium.state);
-  // ergo's skin pressure is per area at rest: ‖f_v‖ = p_v s_v is the force the solver applied.
-  const Eigen::VectorXd force =
-      report.pressures.human.pressure.cwiseProduct(body.skin().rest_areas);
-  return PlanarPressureMap::FromVertexForces(body.skin().RestSurface(positions), force,
-                                             PlanarPressureMap::Facing::kDown);
+  return SkinMapFromBelow(body, DeformedPositions(body, report.evaluation.equilibrium.state),
+                          report.pressures.human.pressure);
 }
 
 }  // namespace ergo
