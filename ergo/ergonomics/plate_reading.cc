@@ -50,6 +50,30 @@ PressureGrid ReadOnCoveringPlate(const PlanarPressureMap& map, double pitch,
   return ReadOnPlate(map, corner, pitch, rows, columns, subsamples);
 }
 
+Eigen::VectorXd ReadOnCells(const PlanarPressureMap& map, const PlanarPoints& centres, double pitch,
+                            double angle, int subsamples) {
+  CHECK_GT(pitch, 0);
+  CHECK_GE(subsamples, 1);
+  RigidMotion2d turn;
+  turn.angle = angle;
+  const Eigen::Matrix2d rotation = turn.Rotation();
+  const int n = subsamples;
+  Eigen::VectorXd reading(centres.rows());
+  for (Eigen::Index i = 0; i < centres.rows(); ++i) {
+    const Eigen::Vector2d centre = centres.row(i).transpose();
+    double sum = 0;
+    for (int b = 0; b < n; ++b) {
+      for (int a = 0; a < n; ++a) {
+        const Eigen::Vector2d local =
+            pitch * Eigen::Vector2d((a + 0.5) / n - 0.5, (b + 0.5) / n - 0.5);
+        sum += map.PressureAt(centre + rotation * local);
+      }
+    }
+    reading[i] = sum / (n * n);
+  }
+  return reading;
+}
+
 bool LoadSeenAlongY(const Eigen::Vector3d& load) {
   constexpr double kCos10Degrees = 0.985;
   const double magnitude = load.norm();

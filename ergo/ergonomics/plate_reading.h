@@ -29,6 +29,12 @@ PressureGrid ReadOnPlate(const PlanarPressureMap& map, const Eigen::Vector2d& co
 PressureGrid ReadOnCoveringPlate(const PlanarPressureMap& map, double pitch,
                                  const Eigen::Vector2d& offset, int margin_cells, int subsamples);
 
+// The map read on given cells: cell i is the square of side `pitch` centred at centres.row(i),
+// its sides turned by `angle` (radians) from the map's axes (a plate aligned onto the map by a
+// rigid motion); each reading the mean of the map over the cell's subsamples² midpoints.
+Eigen::VectorXd ReadOnCells(const PlanarPressureMap& map, const PlanarPoints& centres, double pitch,
+                            double angle, int subsamples);
+
 struct PlatePeakOptions {
   double pitch = 0.005;  // sensel side, m (emed-class plates: 4 sensels/cm², 5 mm)
   // Where the cells fall on the map moves the largest cell's reading; the peak is the largest

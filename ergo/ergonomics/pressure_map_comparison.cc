@@ -8,6 +8,7 @@
 #include <glog/logging.h>
 #include <Eigen/Eigenvalues>
 
+#include "ergo/ergonomics/plate_reading.h"
 #include "ergo/ergonomics/pressure_map_alignment.h"
 #include "ergo/mesh/split_list.h"
 #include "ergo/mesh/text_reader.h"
@@ -80,7 +81,12 @@ std::string PressureMapComparison::BriefReport() const {
   }
   out << ", Dice " << dice << ", IoU " << iou << "; force " << simulated.total_force << " / "
       << measured.total_force << " N; peak " << simulated.peak * 1e-3 << " / "
-      << measured.peak * 1e-3 << " kPa, " << peak_distance * 1e3 << " mm apart; shares";
+      << measured.peak * 1e-3 << " kPa, " << peak_distance * 1e3 << " mm apart";
+  if (cell_pitch > 0) {
+    out << " (the simulation on the plate's " << cell_pitch * 1e3 << " mm cells "
+        << simulated_cell_peak * 1e-3 << " kPa)";
+  }
+  out << "; shares";
   for (const RegionComparison& region : regions)
     out << " " << region.name << " " << region.simulated_share << "/" << region.measured_share;
   out << " (simulated/measured)";
@@ -98,6 +104,15 @@ PressureMapComparison ComparePressureMaps(const PlanarPressureMap& simulated,
   result.simulated = Summarise(simulated);
   result.measured = Summarise(measured);
   result.peak_distance = (result.simulated.peak_point - result.measured.peak_point).norm();
+  if (options.measured_cell_pitch > 0 && measured.sample_pressure().size() > 0) {
+    const Eigen::VectorXd reading =
+        ReadOnCells(simulated, measured.sample_points(), options.measured_cell_pitch,
+                    measured.placement().angle, /*subsamples=*/4);
+    Eigen::Index cell = 0;
+    result.simulated_cell_peak = reading.maxCoeff(&cell);
+    result.simulated_cell_peak_point = measured.sample_points().row(cell).transpose();
+    result.cell_pitch = options.measured_cell_pitch;
+  }
 
   // Both fields on one grid over both maps.
   Eigen::Vector2d lower_s, upper_s, lower_m, upper_m;

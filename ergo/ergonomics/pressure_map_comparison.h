@@ -39,6 +39,9 @@ struct ComparisonOptions {
   Eigen::Vector2d axis_toward = Eigen::Vector2d(0, 1);
   double footprint_threshold = 0;  // Pa, > 0
   double grid_pitch = 0.002;       // m
+  // The measured map's cell pitch when it is a plate (FromGrid), m; 0 otherwise. Then the
+  // simulated map is also read on the plate's own cells, where the alignment laid them.
+  double measured_cell_pitch = 0;
 };
 
 struct MapSummary {
@@ -76,10 +79,17 @@ struct PressureMapComparison {
   long union_nodes = 0;
   double dice = 0, iou = 0;
   double peak_distance = 0;  // between the two peaks, m
+  // With a plate (measured_cell_pitch > 0): the simulated map as the plate's cells, lying where
+  // they lay, would have read it — the peak to hold against the plate's, its cell's centre
+  // (m), and the plate's pitch (m); all 0 otherwise. A sample peak is per vertex, a plate's
+  // per cell, and the two differ by the averaging alone (plate_reading.h).
+  double simulated_cell_peak = 0;
+  Eigen::Vector2d simulated_cell_peak_point = Eigen::Vector2d::Zero();
+  double cell_pitch = 0;
   ComparisonGrid grid;
 
   // "Pearson 0.95, Dice 0.91, IoU 0.84; force 381.6 / 380.2 N; peak 444 / 431 kPa 3.1 mm
-  // apart; shares rearfoot 0.52/0.50, ...".
+  // apart (the simulation on the plate's cells 429 kPa); shares rearfoot 0.52/0.50, ...".
   std::string BriefReport() const;
 };
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ergo/ergonomics/synthetic_measurements.h"
 #include "ergo/mesh/surface_geometry.h"
 #include "tests/support/flat_grid.h"
 
@@ -88,6 +89,45 @@ TEST(ErgonomicsComparison, HalfShiftedFootprintsOverlapByHalf) {
   EXPECT_NEAR(c.dice, 0.5, 0.02);
   EXPECT_NEAR(c.iou, 1.0 / 3, 0.02);
   EXPECT_LT(c.pearson, 0);  // where one is loaded the other mostly is not
+}
+
+// A plate's peak is a cell's mean; the simulation read on that plate's own cells, where the
+// alignment laid them, reads what the plate read. A noise-free synthetic plate of a tent
+// (turned 8°, shifted) laid back by its true motion: the cell readings agree to rounding,
+// while the tent's vertex peak stands above both (a cell averages the apex's slopes).
+TEST(ErgonomicsComparison, TheSimulationOnThePlatesOwnCellsReadsWhatThePlateRead) {
+  const TriMesh grid = testing::MakeFlatGrid(0.03, 12);
+  Eigen::VectorXd pressure(grid.vertices.rows());
+  for (Eigen::Index v = 0; v < grid.vertices.rows(); ++v) {
+    const double r = std::hypot(grid.vertices(v, 0) - 0.005, grid.vertices(v, 2) + 0.005);
+    pressure[v] = std::max(0.0, 300e3 * (1 - r / 0.02));
+  }
+  const PlanarPressureMap simulated = PlanarPressureMap::FromSurface(
+      grid, pressure, BarycentricVertexAreas(grid), PlanarPressureMap::Facing::kUp);
+  SyntheticPlateOptions plate_options;
+  plate_options.rotation = 8 * M_PI / 180;
+  plate_options.shift = Eigen::Vector2d(0.012, -0.007);
+  plate_options.noise = 0;
+  const SyntheticPlate plate = MakeSyntheticPlate(simulated, plate_options);
+  const PlanarPressureMap measured =
+      PlanarPressureMap::FromGrid(plate.grid).Moved(plate.plate_to_map);
+  ComparisonOptions options;
+  options.regions = Thirds();
+  options.footprint_threshold = 1e3;
+  options.measured_cell_pitch = plate_options.pitch;
+  const PressureMapComparison c = ComparePressureMaps(simulated, measured, options);
+  EXPECT_EQ(c.cell_pitch, 0.005);
+  EXPECT_NEAR(c.simulated_cell_peak, c.measured.peak, 1e-9 * c.measured.peak);
+  EXPECT_NEAR((c.simulated_cell_peak_point - c.measured.peak_point).norm(), 0, 1e-12);
+  // The apex sits on a vertex (300 kPa). A 5 mm cell centred on a cone of radius 20 mm averages
+  // 1 − 0.383·5/20 = 0.904 of the apex (the mean distance from a square's centre is 0.383 of
+  // its side), and the mesh's interpolant lies below the cone, so no cell reads above 271 kPa.
+  EXPECT_NEAR(c.simulated.peak, 300e3, 1e-6);
+  EXPECT_LT(c.measured.peak, 0.905 * 300e3);
+  EXPECT_NE(c.BriefReport().find("the simulation on the plate's 5 mm cells"), std::string::npos);
+  // Without a plate's pitch there is no cell reading.
+  options.measured_cell_pitch = 0;
+  EXPECT_EQ(ComparePressureMaps(simulated, measured, options).simulated_cell_peak, 0);
 }
 
 TEST(ErgonomicsComparison, RegionsParser) {

@@ -445,6 +445,7 @@ int Run() {
   comparison.axis_toward = flags.region_axis;
   comparison.footprint_threshold = threshold;
   comparison.grid_pitch = 1e-3 * FLAGS_grid_pitch_mm;
+  if (plate) comparison.measured_cell_pitch = plate->grid.pitch;
   record.comparison =
       ComparePressureMaps(simulated, measured->Moved(record.alignment.motion), comparison);
   std::cout << record.comparison.BriefReport() << "\n";
