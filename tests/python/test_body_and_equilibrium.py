@@ -72,6 +72,13 @@ def test_equilibrium_carries_the_weight(ball):
     squeeze = summary["tissue_compression"]
     assert squeeze["tets_beyond_inversion_threshold"] == 0 and squeeze["inverted_tets"] == 0
     assert 0.1 < squeeze["min_principal_stretch"] <= 1
+    # What a 5 mm plate under the ball would read at its largest cell: one cell cannot carry
+    # more than the whole weight, and it lies under the ball's lowest point.
+    plate = summary["plate_peak"]
+    assert plate["pitch_m"] == 0.005
+    assert 0 < plate["pressure_Pa"] * plate["pitch_m"] ** 2 < weight
+    lowest = result["positions"][np.argmin(result["positions"][:, 1])]
+    assert np.hypot(*(np.array(plate["cell_centre_xz_m"]) - lowest[[0, 2]])) < 0.01
     # The body rests on the box's top (y = 0): nothing is far inside.
     assert result["positions"][:, 1].min() > -1e-3
     assert result["contact_stiffness"] == 3e7
