@@ -6,50 +6,6 @@
 
 namespace ergo {
 
-PressureGrid ReadOnPlate(const PlanarPressureMap& map, const Eigen::Vector2d& corner, double pitch,
-                         Eigen::Index rows, Eigen::Index columns, int subsamples) {
-  CHECK_GT(pitch, 0);
-  CHECK_GE(subsamples, 1);
-  PressureGrid grid;
-  grid.pitch = pitch;
-  grid.origin = corner;
-  grid.pressure = Eigen::MatrixXd::Zero(rows, columns);
-  const int n = subsamples;
-  for (Eigen::Index r = 0; r < rows; ++r) {
-    for (Eigen::Index c = 0; c < columns; ++c) {
-      double sum = 0;
-      for (int b = 0; b < n; ++b) {
-        for (int a = 0; a < n; ++a) {
-          const Eigen::Vector2d q =
-              corner + pitch * Eigen::Vector2d(static_cast<double>(c) + (a + 0.5) / n,
-                                               static_cast<double>(r) + (b + 0.5) / n);
-          sum += map.PressureAt(q);
-        }
-      }
-      grid.pressure(r, c) = sum / (n * n);
-    }
-  }
-  return grid;
-}
-
-PressureGrid ReadOnCoveringPlate(const PlanarPressureMap& map, double pitch,
-                                 const Eigen::Vector2d& offset, int margin_cells, int subsamples) {
-  CHECK_GT(pitch, 0);
-  CHECK_GE(margin_cells, 0);
-  Eigen::Vector2d lower, upper;
-  map.Bounds(&lower, &upper);
-  if (!lower.allFinite() || !upper.allFinite()) {
-    return ReadOnPlate(map, Eigen::Vector2d::Zero(), pitch, 0, 0, subsamples);
-  }
-  const Eigen::Vector2d start = lower - offset;  // the first cell's corner before the margin
-  const Eigen::Vector2d corner = start - margin_cells * pitch * Eigen::Vector2d::Ones();
-  const auto columns =
-      static_cast<Eigen::Index>(std::ceil((upper.x() - start.x()) / pitch)) + 2 * margin_cells;
-  const auto rows =
-      static_cast<Eigen::Index>(std::ceil((upper.y() - start.y()) / pitch)) + 2 * margin_cells;
-  return ReadOnPlate(map, corner, pitch, rows, columns, subsamples);
-}
-
 Eigen::VectorXd ReadOnCells(const PlanarPressureMap& map, const PlanarPoints& centres, double pitch,
                             double angle, int subsamples) {
   CHECK_GT(pitch, 0);
@@ -72,6 +28,41 @@ Eigen::VectorXd ReadOnCells(const PlanarPressureMap& map, const PlanarPoints& ce
     reading[i] = sum / (n * n);
   }
   return reading;
+}
+
+PressureGrid ReadOnPlate(const PlanarPressureMap& map, const Eigen::Vector2d& corner, double pitch,
+                         Eigen::Index rows, Eigen::Index columns, int subsamples) {
+  PressureGrid grid;
+  grid.pitch = pitch;
+  grid.origin = corner;
+  PlanarPoints centres(rows * columns, 2);
+  for (Eigen::Index r = 0; r < rows; ++r)
+    for (Eigen::Index c = 0; c < columns; ++c)
+      centres.row(r * columns + c) = grid.CellCentre(r, c).transpose();
+  const Eigen::VectorXd reading = ReadOnCells(map, centres, pitch, /*angle=*/0, subsamples);
+  // Row-major cells into the rows x columns matrix.
+  grid.pressure =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          reading.data(), rows, columns);
+  return grid;
+}
+
+PressureGrid ReadOnCoveringPlate(const PlanarPressureMap& map, double pitch,
+                                 const Eigen::Vector2d& offset, int margin_cells, int subsamples) {
+  CHECK_GT(pitch, 0);
+  CHECK_GE(margin_cells, 0);
+  Eigen::Vector2d lower, upper;
+  map.Bounds(&lower, &upper);
+  if (!lower.allFinite() || !upper.allFinite()) {
+    return ReadOnPlate(map, Eigen::Vector2d::Zero(), pitch, 0, 0, subsamples);
+  }
+  const Eigen::Vector2d start = lower - offset;  // the first cell's corner before the margin
+  const Eigen::Vector2d corner = start - margin_cells * pitch * Eigen::Vector2d::Ones();
+  const auto columns =
+      static_cast<Eigen::Index>(std::ceil((upper.x() - start.x()) / pitch)) + 2 * margin_cells;
+  const auto rows =
+      static_cast<Eigen::Index>(std::ceil((upper.y() - start.y()) / pitch)) + 2 * margin_cells;
+  return ReadOnPlate(map, corner, pitch, rows, columns, subsamples);
 }
 
 bool LoadSeenAlongY(const Eigen::Vector3d& load) {
