@@ -242,6 +242,10 @@ TEST_F(ToolsSimulate, ANonConvergedSolveExitsNonZeroAndStillWritesTheSummary) {
   const Json summary = ReadJsonFile(*dir_ + "/capped/summary.json");
   EXPECT_FALSE(GetBool(summary, "converged", "summary"));
   EXPECT_NE(GetString(summary, "reason", "summary").find("Newton iterations"), std::string::npos);
+  // Said after the figures, so nobody takes them for an equilibrium's.
+  const size_t said = run.output.find("the equilibrium did not converge");
+  ASSERT_NE(said, std::string::npos) << run.output;
+  EXPECT_GT(said, run.output.find("peak skin pressure")) << run.output;
 }
 
 TEST_F(ToolsSimulate, BadInputsExitWithStatusTwoNamingTheCulprit) {

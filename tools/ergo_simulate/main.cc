@@ -254,7 +254,16 @@ int Run() {
   std::cout << "wrote " << output.final_path() << "/body_deformed.vtu, support.vtu, "
             << (soft_support ? "support_solid.vtu, " : "") << "summary.json, plot_data.json"
             << (plotted ? ", pressure_map.png, pressure_histogram.png" : "") << "\n";
-  if (!result.converged) return 1;
+  if (!result.converged) {
+    // Said last, where a reader of the figures above looks: they are the last iterate's.
+    std::cout.flush();
+    std::cerr << "ergo_simulate: the equilibrium did not converge (" << result.message
+              << "): the files hold the last iterate for inspection, and the split, peaks and "
+                 "pressures printed above are not an equilibrium's (raise --max_iterations or "
+                 "--max_seconds; tissue crushed past its law, when warned of above, often keeps "
+                 "Newton from converging)\n";
+    return 1;
+  }
   if (!touched) {
     std::cerr << "ergo_simulate: the body does not touch the support at equilibrium\n";
     return 1;
