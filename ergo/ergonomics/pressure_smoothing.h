@@ -38,7 +38,7 @@ class PressureSmoothing {
   struct Filter;
   Eigen::Index size_ = 0;
   double radius_ = 0;
-  SparseMatrix laplacian_;                // umbrella L (radius 0)
+  SparseMatrix laplacian_;                  // umbrella L (radius 0)
   std::shared_ptr<const Filter> filter_;  // (M + R²K) factorised, and M
 };
 

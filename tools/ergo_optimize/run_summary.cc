@@ -307,12 +307,14 @@ std::string SummaryMarkdown(const RunSummary& s) {
      << "\n";
   if (IsShoe(s) && fresh.ok) {
     const OffloadingReading reading = ReadOffloading(s);
+    const bool on_plate = std::string(reading.name) != "skin vertex";
     md << "Clinical reading (in-shoe offloading: peak reduction > 30 % or peak < 200 kPa, Bus et "
-          "al. 2011), on the peak a "
-       << reading.name << " reads: " << (reading.met() ? "met" : "not met") << " — peak "
+          "al. 2011), on "
+       << (on_plate ? "the peak a 5 mm plate reads" : "ergo's per-vertex peak") << ": "
+       << (reading.met() ? "met" : "not met") << " — peak "
        << Format("%.1f", reading.optimized / 1e3) << " kPa, " << Format("%.1f", reading.relief())
        << " % below the flat sole";
-    if (std::string(reading.name) != "skin vertex") {
+    if (on_plate) {
       md << " (ergo's per-vertex peak: " << Format("%.1f", s.optimized.peak_pressure / 1e3)
          << " kPa, "
          << Format("%.1f", Reduction(s.initial.peak_pressure, s.optimized.peak_pressure))
