@@ -17,6 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 FIXED = ["case", "status", "initial_score", "optimized_score", "reduction_percent",
          "followed_reduction_percent", "worst_placement_reduction_percent",
          "skin_zeta_reduction_percent", "initial_peak_pressure_Pa", "fresh_peak_pressure_Pa",
+         "initial_plate_peak_pressure_Pa", "fresh_plate_peak_pressure_Pa",
          "evaluations", "wall_s", "message"]
 
 

@@ -58,9 +58,16 @@ TEST(ToolsSweep, TwoByTwoSweepWritesItsReportsAndResumesKeepingFinishedCases) {
   EXPECT_NE(md.find("4 cases, bump_height × 2, exponent × 2; 4 finished, 0 failed"),
             std::string::npos)
       << md;
+  // The peak a 5 mm plate would read, before and after, beside ergo's per-vertex one.
+  EXPECT_NE(csv.find(",initial_plate_peak_pressure_Pa,fresh_plate_peak_pressure_Pa,"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(md.find("| 5 mm plate's peak kPa before → after |"), std::string::npos) << md;
   if (first.output.find("no python3 with matplotlib") == std::string::npos) {
     EXPECT_TRUE(fs::exists(dir / "sweep_bump_height.png")) << first.output;
     EXPECT_TRUE(fs::exists(dir / "sweep_exponent.png")) << first.output;
+    // A result column is not taken for a varied flag.
+    EXPECT_FALSE(fs::exists(dir / "sweep_fresh_plate_peak_pressure_Pa.png"));
   }
 
   // Half the folder gone (as if the sweep had been killed halfway): only that half runs.

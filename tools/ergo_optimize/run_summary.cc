@@ -170,6 +170,8 @@ Json SummaryJson(const RunSummary& s) {
       ThreeWay(s.initial.plate_peak_pressure, Of(s.followed, s.followed.plate_peak_pressure),
                Of(s.optimized, s.optimized.plate_peak_pressure));
   j["plate_peak_pressure_Pa"]["pitch_m"] = PlatePeakOptions().pitch;
+  j["initial_plate_peak_pressure_Pa"] = Number(s.initial.plate_peak_pressure);
+  j["fresh_plate_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.plate_peak_pressure));
   const double relief =
       Of(s.optimized, Reduction(s.initial.peak_pressure, s.optimized.peak_pressure));
   j["peak_relief_percent"] = Number(relief);

@@ -153,6 +153,8 @@ const std::vector<std::pair<const char*, const char*>> kColumns = {
     {"skin_zeta_reduction_percent", "skin_zeta_reduction_percent"},
     {"initial_peak_pressure_Pa", "initial_peak_pressure_Pa"},
     {"fresh_peak_pressure_Pa", "fresh_peak_pressure_Pa"},
+    {"initial_plate_peak_pressure_Pa", "initial_plate_peak_pressure_Pa"},
+    {"fresh_plate_peak_pressure_Pa", "fresh_plate_peak_pressure_Pa"},
     {"evaluations", "evaluations"},
     {"wall_s", "wall_s"}};
 
@@ -182,14 +184,14 @@ void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
         << "ergo_optimize's headline: the body placed afresh on the kept design.\n\n|";
     for (const SweepAxis& axis : axes) out << " " << axis.flag << " |";
     out << " reduction afresh | followed | worst placement | peak kPa before → after | "
-           "evaluations | wall s |\n|";
-    for (size_t k = 0; k < axes.size() + 6; ++k) out << "---|";
+           "5 mm plate's peak kPa before → after | evaluations | wall s |\n|";
+    for (size_t k = 0; k < axes.size() + 7; ++k) out << "---|";
     out << "\n";
     for (const SweepOutcome& o : outcomes) {
       out << "|";
       for (const auto& [flag, value] : o.plan->flags) out << " " << value << " |";
       if (!o.run.finished) {
-        out << " **failed** | | | | | |\n";
+        out << " **failed** | | | | | | |\n";
         continue;
       }
       const Json& s = o.run.summary;
@@ -198,6 +200,8 @@ void WriteReports(const fs::path& dir, const std::vector<SweepAxis>& axes,
           << Percent(Field(s, "worst_placement_reduction_percent")) << " | "
           << Number(Field(s, "initial_peak_pressure_Pa") / 1e3, 4) << " → "
           << Number(Field(s, "fresh_peak_pressure_Pa") / 1e3, 4) << " | "
+          << Number(Field(s, "initial_plate_peak_pressure_Pa") / 1e3, 4) << " → "
+          << Number(Field(s, "fresh_plate_peak_pressure_Pa") / 1e3, 4) << " | "
           << Number(Field(s, "evaluations")) << " | " << Number(Field(s, "wall_s"), 4) << " |\n";
     }
     if (failed > 0) {
