@@ -58,16 +58,17 @@ bool IsShoe(const RunSummary& s) { return s.scenario->name == "shoe"; }
 // insole are about 2 cm² each), so it is read on the peak a 5 mm plate reads where there is one
 // (the load seen along y), and on ergo's per-vertex peak otherwise.
 struct OffloadingReading {
-  const char* name;                         // "5 mm plate" or "skin vertex"
+  bool on_plate = false;                    // else ergo's per-vertex peak
   double initial = kNaN, optimized = kNaN;  // Pa
+  const char* name() const { return on_plate ? "5 mm plate" : "skin vertex"; }
   double relief() const { return Reduction(initial, optimized); }
   bool met() const { return relief() > kOffloadingRelief || optimized < kOffloadingPeak; }
 };
 
 OffloadingReading ReadOffloading(const RunSummary& s) {
   if (std::isfinite(s.initial.plate_peak_pressure) && s.initial.plate_peak_pressure > 0)
-    return {"5 mm plate", s.initial.plate_peak_pressure, s.optimized.plate_peak_pressure};
-  return {"skin vertex", s.initial.peak_pressure, s.optimized.peak_pressure};
+    return {true, s.initial.plate_peak_pressure, s.optimized.plate_peak_pressure};
+  return {false, s.initial.peak_pressure, s.optimized.peak_pressure};
 }
 
 // The centre of pressure's fraction of the length from the regions' start (the heel).
@@ -166,11 +167,9 @@ Json SummaryJson(const RunSummary& s) {
   j["followed_peak_pressure_Pa"] = Number(Of(s.followed, s.followed.peak_pressure));
   // What a 5 mm pressure plate under the skin would read at its largest cell (plate_reading.h):
   // the figure to compare with plate measurements, and one that does not grow as the mesh refines.
-  j["plate_peak_pressure_Pa"] =
-      ThreeWay(s.initial.plate_peak_pressure, Of(s.followed, s.followed.plate_peak_pressure),
-               Of(s.optimized, s.optimized.plate_peak_pressure));
-  j["plate_peak_pressure_Pa"]["pitch_m"] = PlatePeakOptions().pitch;
   j["initial_plate_peak_pressure_Pa"] = Number(s.initial.plate_peak_pressure);
+  j["followed_plate_peak_pressure_Pa"] = Number(Of(s.followed, s.followed.plate_peak_pressure));
+  j["plate_pitch_m"] = PlatePeakOptions().pitch;
   j["fresh_plate_peak_pressure_Pa"] = Number(Of(s.optimized, s.optimized.plate_peak_pressure));
   const double relief =
       Of(s.optimized, Reduction(s.initial.peak_pressure, s.optimized.peak_pressure));
@@ -179,7 +178,7 @@ Json SummaryJson(const RunSummary& s) {
     const OffloadingReading reading = ReadOffloading(s);
     Json offloading = Json::object();
     offloading["criterion"] = "peak reduction > 30 % or peak < 200 kPa (Bus et al. 2011, IWGDF)";
-    offloading["reading"] = reading.name;
+    offloading["reading"] = reading.name();
     offloading["initial_peak_Pa"] = Number(reading.initial);
     offloading["peak_Pa"] = Number(Of(s.optimized, reading.optimized));
     offloading["peak_reduction_percent"] = Number(Of(s.optimized, reading.relief()));
@@ -309,14 +308,13 @@ std::string SummaryMarkdown(const RunSummary& s) {
      << "\n";
   if (IsShoe(s) && fresh.ok) {
     const OffloadingReading reading = ReadOffloading(s);
-    const bool on_plate = std::string(reading.name) != "skin vertex";
     md << "Clinical reading (in-shoe offloading: peak reduction > 30 % or peak < 200 kPa, Bus et "
           "al. 2011), on "
-       << (on_plate ? "the peak a 5 mm plate reads" : "ergo's per-vertex peak") << ": "
+       << (reading.on_plate ? "the peak a 5 mm plate reads" : "ergo's per-vertex peak") << ": "
        << (reading.met() ? "met" : "not met") << " — peak "
        << Format("%.1f", reading.optimized / 1e3) << " kPa, " << Format("%.1f", reading.relief())
        << " % below the flat sole";
-    if (on_plate) {
+    if (reading.on_plate) {
       md << " (ergo's per-vertex peak: " << Format("%.1f", s.optimized.peak_pressure / 1e3)
          << " kPa, "
          << Format("%.1f", Reduction(s.initial.peak_pressure, s.optimized.peak_pressure))
