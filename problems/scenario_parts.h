@@ -83,7 +83,7 @@ struct ScenarioBuildReport {
   Eigen::Vector3d load = Eigen::Vector3d::Zero();  // weight + external force, N
   double body_seconds = 0, support_seconds = 0, negative_image_seconds = 0, start_seconds = 0;
   std::string negative_image;  // one line when a negative image was made
-  std::string roll;            // one line when the shoe's roll was balanced
+  std::string roll;            // one line when the shoe's roll was balanced or stood
   double roll_radians = 0;     // the body's start roll about its length axis (z)
   double skin_edge = 0;        // mean skin edge near the designed region, m
 };

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <vector>
 
 #include "ergo/body/anatomical_priors.h"
+#include "ergo/body/body_directory.h"
 #include "ergo/body/core_lock.h"
+#include "ergo/body/recorded_anatomy.h"
 #include "ergo/design/lengthwise_shares.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
@@ -17,6 +20,20 @@
 #include "problems/profile_block.h"
 
 namespace ergo {
+namespace {
+
+// A user's scan of a foot: a skin surface built with the foot's anatomy, or a body directory
+// whose body.json records it (ergo_body build --anatomy=foot).
+bool ScannedFoot(const UserBodyInput& user) {
+  if (!user.skin_surface.empty()) return user.anatomy.anatomy == Anatomy::kFoot;
+  if (user.body_directory.empty()) return false;
+  const std::string record = (std::filesystem::path(user.body_directory) / kBodyJsonFile).string();
+  return ReadRecordedAnatomy(GetMember(ReadJsonFile(record), "source", record), record).anatomy ==
+         Anatomy::kFoot;
+}
+
+}  // namespace
+
 ShoeScenarioOptions ShoeScenarioOptions::FromPreset(const std::string& preset) {
   ShoeScenarioOptions o;
   o.preset = preset;
@@ -107,10 +124,23 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
     }
     r.support_seconds += SecondsSince(begin);
   };
-  make_sole(o.balance_roll ? 0 : o.roll);
+  using RollRule = ShoeScenarioOptions::RollRule;
+  const bool balance_roll = o.roll_rule == RollRule::kBalance;
+  const bool stance_roll = o.roll_rule == RollRule::kStance ||
+                           (o.roll_rule == RollRule::kAuto && ScannedFoot(o.user_body));
+  double roll = o.roll;
+  if (stance_roll) {
+    AnatomyOptions anatomy = o.user_body.anatomy;
+    if (o.user_body.empty()) anatomy.heel_end = HeelEnd::kMinZ;
+    const StanceRoll stance = FindStanceRoll(*scenario.body, anatomy, o.calcaneal_stance,
+                                             o.roll_balance.max_roll, "shoe stance roll");
+    roll = stance.roll;
+    r.roll = stance.BriefReport();
+  }
+  make_sole(balance_roll ? 0 : roll);
   const double support_seconds = r.support_seconds;
   auto start = std::chrono::steady_clock::now();
-  if (o.balance_roll) {
+  if (balance_roll) {
     EquilibriumOptions equilibrium = scenario.design.equilibrium;
     equilibrium.contact_stiffness = o.contact_stiffness;
     equilibrium.free_fall_mass_scale = o.free_fall_mass_scale;
@@ -126,9 +156,9 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
                                   scenario.support, o.start_gap, "shoe");
     }
   } else {
-    scenario.start = StartAbove(*scenario.body, RolledRestState(*scenario.body, o.roll),
+    scenario.start = StartAbove(*scenario.body, RolledRestState(*scenario.body, roll),
                                 scenario.support, o.start_gap, "shoe");
-    r.roll_radians = o.roll;
+    r.roll_radians = roll;
   }
   scenario.design.placement_gap = o.start_gap;
   r.start_seconds = SecondsSince(start) - (r.support_seconds - support_seconds);
@@ -176,7 +206,7 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   } catch (const InputError&) {
   }
   if (o.load_point) description << ", load at " << 100 * *o.load_point << " % from the heel";
-  if (o.balance_roll || o.roll != 0)
+  if (balance_roll || stance_roll || roll != 0)
     description << ", roll " << r.roll_radians / RollBalanceOptions::kDegree << " degrees";
   description << ")";
   FinishScenario(description.str(), support.str(), o.contact_stiffness, o.free_fall_mass_scale,

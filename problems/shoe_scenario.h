@@ -15,6 +15,7 @@
 #include "problems/roll_balance.h"
 #include "problems/scenario.h"
 #include "problems/scenario_parts.h"
+#include "problems/stance_roll.h"
 
 namespace ergo {
 
@@ -44,11 +45,17 @@ struct ShoeScenarioOptions {
   // lean_torque. Unset: through the core's centre (the generated foot's centre of pressure is
   // then at 0.348 of its length; ergo's default for it before 2026-12-07).
   std::optional<double> load_point = 0.445;
-  // The foot's roll about its length axis (z), held by the lock: `roll` (rad), or, with
-  // balance_roll, the roll at which it stands on the sole with no torque about its length
-  // (problems/roll_balance.h; a scan is not taken standing level).
-  bool balance_roll = false;
+  // The foot's roll about its length axis (z), held by the lock (a scan is not taken
+  // standing): kGiven, `roll` (rad); kBalance, the roll at which it stands on the sole with no
+  // torque about its length (problems/roll_balance.h); kStance, the roll that stands its heel
+  // at `calcaneal_stance` (rad everted; problems/stance_roll.h); kAuto, kStance for a scanned
+  // foot (a skin surface with the foot's anatomy, or a body directory built with it: a scan
+  // at rest) and `roll` for the generated foot (modelled standing, its split already the
+  // barefoot one: README "Scans").
+  enum class RollRule { kGiven, kBalance, kStance, kAuto };
+  RollRule roll_rule = RollRule::kAuto;
   double roll = 0;
+  double calcaneal_stance = StanceRoll::kAdultCalcanealStance;
   RollBalanceOptions roll_balance;
   bool negative_image = false;
   NegativeImageOptions negative{0.01, 0, 3, 0.006, 10, 0.5, 0.001};

@@ -14,9 +14,14 @@ scan's own axes are mapped by --axes as ergo_body's --axes does, and mapped back
       length and --toe_axis_height mm up, by 0 behind it, DEG from 80 %, smoothstep between.
 The eversion is applied first. The scan must be an OBJ in metres (v and f lines; other lines
 are kept).
+  --measure_forefoot=LO,HI  instead of posing, print how far the forefoot stands medial side
+      up: the lowest skin (within 3 cm of the floor) in nine bins across the footprint of the
+      band LO..HI of the length (fractions from the heel), fitted by a line across the foot;
+      --medial=-x|+x says which side is medial (-x for the FIND foot, a left foot).
 
 usage: pose_foot_scan.py IN.obj OUT.obj [--axes=y,z,x] [--forefoot_eversion=DEG]
            [--toe_flexion=DEG] [--forefoot_axis_height=25] [--toe_axis_height=15]
+       pose_foot_scan.py IN.obj --measure_forefoot=0.63,0.77 [--axes=y,z,x] [--medial=-x]
 """
 import math
 import os
@@ -66,9 +71,35 @@ def pose(points, forefoot_eversion_deg=0.0, toe_flexion_deg=0.0, forefoot_axis_h
     return p
 
 
+def forefoot_angle(points, band, medial_sign):
+    """Degrees the forefoot's lowest skin rises towards the medial side across the foot, over
+    the band (lo, hi) of the length from the heel at the smallest z (ergo's frame, metres)."""
+    p = np.asarray(points, dtype=float)
+    lo, hi = p.min(axis=0), p.max(axis=0)
+    s = (p[:, 2] - lo[2]) / (hi[2] - lo[2])
+    sole = p[(s >= band[0]) & (s <= band[1]) & (p[:, 1] < lo[1] + 0.03)]
+    if len(sole) < 3:
+        raise ValueError(f"--measure_forefoot={band[0]},{band[1]}: no skin within 3 cm of the "
+                         "floor in that band")
+    left, right = sole[:, 0].min(), sole[:, 0].max()
+    centre, half = 0.5 * (left + right), 0.5 * (right - left)
+    lowest = []
+    for a in np.linspace(-0.8, 0.8, 9):
+        near = np.abs((sole[:, 0] - centre) / half - a) < 0.1
+        if near.any():
+            k = np.argmin(sole[near, 1])
+            lowest.append(sole[near][k, :2])
+    if len(lowest) < 2:
+        raise ValueError("--measure_forefoot: fewer than two bins across the foot hold skin")
+    lowest = np.array(lowest)
+    slope = np.polyfit(medial_sign * lowest[:, 0], lowest[:, 1], 1)[0]
+    return math.degrees(math.atan(slope))
+
+
 def main(argv):
     options = {"axes": "x,y,z", "forefoot_eversion": "0", "toe_flexion": "0",
-               "forefoot_axis_height": "25", "toe_axis_height": "15"}
+               "forefoot_axis_height": "25", "toe_axis_height": "15", "measure_forefoot": "",
+               "medial": "-x"}
     paths = []
     for arg in argv[1:]:
         if arg.startswith("--") and "=" in arg and arg[2:].split("=", 1)[0] in options:
@@ -78,13 +109,25 @@ def main(argv):
             sys.exit(f"pose_foot_scan.py: unknown option {arg}\n{__doc__}")
         else:
             paths.append(arg)
-    if len(paths) != 2:
+    measure = options["measure_forefoot"] != ""
+    if len(paths) != (1 if measure else 2):
         sys.exit(__doc__)
     try:
         order = axis_permutation(options["axes"])
+        if options["medial"] not in ("-x", "+x"):
+            raise ValueError(f"--medial={options['medial']}: give -x or +x")
+        band = None
+        if measure:
+            try:
+                band = [float(t) for t in options["measure_forefoot"].split(",")]
+            except ValueError:
+                band = []
+            if len(band) != 2 or not 0 <= band[0] < band[1] <= 1:
+                raise ValueError(f"--measure_forefoot={options['measure_forefoot']}: give two "
+                                 "fractions of the length, LO < HI, e.g. 0.63,0.77")
         values = {}
         for key, text in options.items():
-            if key == "axes":
+            if key in ("axes", "measure_forefoot", "medial"):
                 continue
             try:
                 value = float(text)
@@ -113,6 +156,13 @@ def main(argv):
         if not np.isfinite(scan[k]).all():
             sys.exit(f"pose_foot_scan.py: {paths[0]}:{i + 1}: a vertex coordinate is not finite")
     ergo = scan[:, order]
+    if measure:
+        try:
+            angle = forefoot_angle(ergo, band, -1.0 if options["medial"] == "-x" else 1.0)
+        except ValueError as error:
+            sys.exit(f"pose_foot_scan.py: {paths[0]}: {error}")
+        print(f"forefoot over {band[0]}-{band[1]} of the length: {angle:.2f} deg, medial side up")
+        return
     posed = pose(ergo, values["forefoot_eversion"], values["toe_flexion"],
                  1e-3 * values["forefoot_axis_height"], 1e-3 * values["toe_axis_height"])
     back = np.empty_like(posed)

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "ergo/body/heel_bisector.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/surface_geometry.h"
 
@@ -478,6 +479,17 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
             << (priors.toe_clearance > 0.005
                     ? " (toes held up: a standing foot's rest on the floor)"
                     : "");
+    priors.medial_sign = foot.medial_sign;
+    try {
+      priors.heel_eversion = MeasureHeelBisector(skin, frame.start_at_min, foot.medial_sign,
+                                                 HeelBisectorOptions(), source)
+                                 .eversion;
+      const double degrees = priors.heel_eversion * 180 / M_PI;
+      summary << ", the heel's bisector " << std::round(10 * std::abs(degrees)) / 10 << " deg "
+              << (degrees >= 0 ? "everted" : "inverted") << " as scanned";
+    } catch (const InputError&) {
+      summary << ", the heel's bisector not drawn (too little of the heel's outline)";
+    }
   } else if (options.anatomy == Anatomy::kSeat) {
     const SeatModel seat = DetectSeat(v, normals, source, &priors.landmarks);
     prior = [seat](const Eigen::Vector3d& p, const Eigen::Vector3d& n) { return seat.At(p, n); };

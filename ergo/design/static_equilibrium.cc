@@ -105,7 +105,13 @@ StaticEquilibrium SolveStaticEquilibrium(const LayeredBody& body, const TriMesh&
     equilibrium.contact_stiffness = options.contact_stiffness;
   }
 
-  BodyState start = RestState(body);
+  if (!options.start_rotation.allFinite())
+    throw InputError("equilibrium options", "start_rotation", "is not finite",
+                     "give a finite rotation vector, rad");
+  BodyState start =
+      options.start_rotation.isZero()
+          ? RestState(body)
+          : MovedRigidly(body, RestState(body), Eigen::Vector3d::Zero(), options.start_rotation);
   if (options.place) {
     const PlacementResult placed = PlaceAboveSupport(body, start, support, options.gap);
     solved.placed_found = placed.found;

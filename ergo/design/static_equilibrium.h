@@ -33,6 +33,9 @@ struct StaticEquilibriumOptions {
   // equilibrium is `target_penetration` (paper §3.5), starting from a guess from the load.
   double contact_stiffness = 0;
   double target_penetration = 3e-4;  // m
+  // The rest body turned by this rotation vector (rad) about its core's centre before it is
+  // placed: a foot's roll about its length is (0, 0, roll).
+  Eigen::Vector3d start_rotation = Eigen::Vector3d::Zero();
   // Move the body along its load to `gap` above the support before solving.
   bool place = true;
   double gap = 1e-3;                 // m

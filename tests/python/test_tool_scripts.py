@@ -196,6 +196,33 @@ def test_pose_foot_scan_turns_each_part_by_its_angle_about_its_axis(source_dir, 
     assert not (tmp_path / "bad.obj").exists()
 
 
+def test_pose_foot_scan_measures_the_forefoots_tilt_across_the_foot(source_dir, tmp_path):
+    # Known answer: in ergo's frame a foot-sized cloud whose lowest skin in the band 0.6-0.8 of
+    # the length lies on a line rising 5 degrees towards -x (the medial side of a left foot);
+    # everything else in the band stands higher. Read with --medial=-x it is 5 degrees medial
+    # side up, with +x -5.
+    rng = np.random.default_rng(3)
+    tilt = np.tan(np.radians(5))
+    x = np.linspace(0.0, 0.1, 201)
+    z = np.full_like(x, 0.175)  # 0.7 of the 0.25 length
+    lowest = np.column_stack([x, 0.01 + tilt * (0.1 - x), z])
+    above = rng.uniform([0, 0.03, 0], [0.1, 0.06, 0.25], size=(400, 3))
+    ends = np.array([[0.05, 0.02, 0.0], [0.05, 0.02, 0.25]])  # the length's ends
+    ergo = np.vstack([lowest, above, ends])
+    scan = ergo[:, [2, 0, 1]]
+    source = tmp_path / "foot.obj"
+    source.write_text("".join(f"v {a!r} {b!r} {c!r}\n" for a, b, c in scan))
+    for medial, expected in (("-x", 5.0), ("+x", -5.0)):
+        run = run_pose(source_dir, source, "--axes=y,z,x", "--measure_forefoot=0.6,0.8",
+                       f"--medial={medial}")
+        assert run.returncode == 0, run.stderr
+        angle = float(run.stdout.split(":")[1].split("deg")[0])
+        assert abs(angle - expected) < 0.01, run.stdout  # printed to 0.01 degrees
+    for bad in ("--measure_forefoot=0.8,0.6", "--measure_forefoot=a,b", "--medial=up"):
+        refused = run_pose(source_dir, source, "--axes=y,z,x", "--measure_forefoot=0.6,0.8", bad)
+        assert refused.returncode != 0 and bad in refused.stderr, refused.stderr
+
+
 def test_pose_foot_scan_refuses_bad_input_naming_it_and_writes_nothing(source_dir, tmp_path):
     good = tmp_path / "foot.obj"
     good.write_text("v 0 0 0\nv 0.25 0.1 0.05\nv 0.1 0.05 0.02\nf 1 2 3\n")

@@ -100,10 +100,16 @@ DEFINE_string(shoe_load_point, "0.445",
               "shoe: where the load's line meets the sole, as a fraction of the foot's length "
               "from the heel (quiet standing: 0.445, Teranishi et al. 2013); none: through the "
               "core's centre (the generated foot's default before 2026-12-07)");
-DEFINE_string(shoe_roll, "0",
+DEFINE_string(shoe_roll, "auto",
               "shoe: the foot's roll about its length in degrees (> 0 turns +x up), held while "
               "standing; or balance: the roll at which the load through the core's centre "
-              "leaves no torque about the length, found by a few equilibria on the sole");
+              "leaves no torque about the length, found by a few equilibria on the sole; or "
+              "stance: the roll that stands the heel's bisector at --shoe_calcaneal_stance; or "
+              "auto: stance for a scanned foot (--anatomy=foot), 0 for the generated foot");
+DEFINE_double(shoe_calcaneal_stance, 6.07,
+              "shoe, with --shoe_roll=stance: the wearer's resting calcaneal stance position, "
+              "degrees everted (< 0 inverted); default the healthy adults' mean, 6.07 +- 2.7 "
+              "(Sobel et al. 1999)");
 DEFINE_string(shoe_sole_outline, "rectangle",
               "shoe: the sole's outline: rectangle, or footprint (the foot's footprint grown by "
               "--shoe_sole_margin: a fitted insole, printed as such)");
@@ -291,19 +297,39 @@ std::optional<double> ShoeLoadPointFlag() {
   return FractionFlag(FLAGS_shoe_load_point, "shoe_load_point", "none");
 }
 
-// --shoe_roll: an angle in degrees, or balance.
+// --shoe_roll: an angle in degrees, balance, stance (with --shoe_calcaneal_stance) or auto.
 void ApplyShoeRollFlag(ShoeScenarioOptions* o) {
   const std::string& text = FLAGS_shoe_roll;
-  o->balance_roll = text == "balance";
-  if (o->balance_roll) {
+  using RollRule = ShoeScenarioOptions::RollRule;
+  if (!(std::abs(FLAGS_shoe_calcaneal_stance) <= 30)) {
+    throw InputError(
+        "--shoe_calcaneal_stance", "",
+        "'" + std::to_string(FLAGS_shoe_calcaneal_stance) + "' is not an angle within ±30 degrees",
+        "give the resting calcaneal stance position in degrees everted, e.g. 6.07");
+  }
+  o->calcaneal_stance = FLAGS_shoe_calcaneal_stance * RollBalanceOptions::kDegree;
+  if (text != "stance" && text != "auto" &&
+      !gflags::GetCommandLineFlagInfoOrDie("shoe_calcaneal_stance").is_default) {
+    throw InputError("--shoe_calcaneal_stance", "",
+                     "a stance is only stood with --shoe_roll=stance or auto, not " + text,
+                     "drop one of the two flags");
+  }
+  if (text == "balance") {
+    o->roll_rule = RollRule::kBalance;
     o->roll_balance.progress = [](const std::string& line) { std::cout << "  " << line << "\n"; };
     return;
   }
+  if (text == "stance" || text == "auto") {
+    o->roll_rule = text == "stance" ? RollRule::kStance : RollRule::kAuto;
+    o->roll = 0;
+    return;
+  }
+  o->roll_rule = RollRule::kGiven;
   char* end = nullptr;
   const double degrees = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || *end != '\0' || !(std::abs(degrees) <= 30)) {
     throw InputError("--shoe_roll", "", "'" + text + "' is not an angle within ±30 degrees",
-                     "give e.g. 0 or 11.5, or balance");
+                     "give e.g. 0 or 11.5, balance, stance or auto");
   }
   o->roll = degrees * RollBalanceOptions::kDegree;
 }
@@ -343,7 +369,7 @@ void WarnIfStiffnessUncalibrated(const char* scene) {
 
 void PrintReport(const ScenarioBuildReport& r) {
   std::cout << "  " << r.body << "\n  " << r.support << "\n";
-  if (!r.roll.empty()) std::cout << "  roll balance: " << r.roll << "\n";
+  if (!r.roll.empty()) std::cout << "  roll: " << r.roll << "\n";
   if (!r.negative_image.empty()) std::cout << "  negative image: " << r.negative_image << "\n";
   std::cout << "  built in "
             << r.body_seconds + r.support_seconds + r.negative_image_seconds + r.start_seconds

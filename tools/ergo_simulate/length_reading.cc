@@ -15,6 +15,7 @@
 #include "ergo/design/lengthwise_shares.h"
 #include "ergo/mesh/input_error.h"
 #include "problems/load_point.h"
+#include "problems/stance_roll.h"
 
 DEFINE_string(load_point, "none",
               "the whole load's line of action through the point at this fraction of the "
@@ -30,7 +31,22 @@ DEFINE_string(regions, "auto",
               "forefoot: below 30 %, 30-60 % and from 60 % of the length from the heel), "
               "none, or auto (foot for a body built with --anatomy=foot)");
 
+DEFINE_string(roll, "0",
+              "the body turned about its length (z) through its core's centre before it is "
+              "placed, degrees (> 0 turns +x up); or stance: the roll that stands a foot's "
+              "heel bisector at --calcaneal_stance (as ergo_optimize's --shoe_roll=stance)");
+DEFINE_double(calcaneal_stance, 6.07,
+              "with --roll=stance: the resting calcaneal stance position, degrees everted "
+              "(< 0 inverted); default the healthy adults' mean, 6.07 +- 2.7 (Sobel et al. 1999)");
+DEFINE_string(foot_side, "auto",
+              "with --roll=stance: left, right, or auto (the medial side is where the "
+              "midfoot's underside is higher, the arch)");
+
 namespace ergo {
+namespace {
+constexpr double kDegree = StanceRoll::kDegree;
+constexpr double kMaxRoll = 30 * kDegree;
+}  // namespace
 
 LengthReading ParseLengthFlags() {
   LengthReading reading;
@@ -51,6 +67,30 @@ LengthReading ParseLengthFlags() {
   reading.foot_regions = FLAGS_regions == "foot";
   reading.auto_regions = FLAGS_regions == "auto";
   reading.heel_end = ParseHeelEnd(FLAGS_heel_end, "--heel_end");
+  reading.foot_side = ParseFootSide(FLAGS_foot_side, "--foot_side");
+  if (!(std::abs(FLAGS_calcaneal_stance) <= 30)) {
+    throw InputError(
+        "--calcaneal_stance", "",
+        "'" + std::to_string(FLAGS_calcaneal_stance) + "' is not an angle within ±30 degrees",
+        "give the resting calcaneal stance position in degrees everted, e.g. 6.07");
+  }
+  reading.calcaneal_stance = FLAGS_calcaneal_stance * kDegree;
+  reading.stance_roll = FLAGS_roll == "stance";
+  for (const char* flag : {"calcaneal_stance", "foot_side"}) {
+    if (!reading.stance_roll && !gflags::GetCommandLineFlagInfoOrDie(flag).is_default) {
+      throw InputError(std::string("--") + flag, "", "is only read with --roll=stance",
+                       "add --roll=stance or drop the flag");
+    }
+  }
+  if (!reading.stance_roll) {
+    char* end = nullptr;
+    const double degrees = std::strtod(FLAGS_roll.c_str(), &end);
+    if (end == FLAGS_roll.c_str() || *end != '\0' || !(std::abs(degrees) <= 30)) {
+      throw InputError("--roll", "", "'" + FLAGS_roll + "' is not an angle within ±30 degrees",
+                       "give e.g. 0 or 5.4, or stance");
+    }
+    reading.roll = degrees * kDegree;
+  }
   return reading;
 }
 
@@ -60,11 +100,21 @@ void ResolveLengthReading(const std::string& body_dir, const LayeredBody& body,
   const RecordedAnatomy recorded =
       ReadRecordedAnatomy(GetMember(ReadJsonFile(record), "source", record), record);
   if (reading->auto_regions) reading->foot_regions = recorded.anatomy == Anatomy::kFoot;
-  if (reading->load_point || reading->foot_regions) {
+  if (reading->load_point || reading->foot_regions || reading->stance_roll) {
     const HeelEnd end = reading->heel_end != HeelEnd::kAuto
                             ? reading->heel_end
                             : recorded.heel_end.value_or(HeelEnd::kAuto);
     reading->heel_at_min_z = HeelAtMinZ(body.rest().vertices, end, "--heel_end");
+  }
+  if (reading->stance_roll) {
+    AnatomyOptions foot;
+    foot.heel_end = reading->heel_at_min_z ? HeelEnd::kMinZ : HeelEnd::kMaxZ;
+    foot.foot_side = reading->foot_side;
+    const StanceRoll stance =
+        FindStanceRoll(body, foot, reading->calcaneal_stance, kMaxRoll, "--roll=stance");
+    reading->roll = stance.roll;
+    reading->roll_line = stance.BriefReport();
+    reading->heel_eversion = stance.heel_eversion;
   }
 }
 
@@ -89,6 +139,16 @@ std::string ReportLengthReading(const LengthReading& reading, const LayeredBody&
     load["heel_end"] = heel_end;
     load["external_torque_Nm"] = Json::array({torque.x(), torque.y(), torque.z()});
     (*summary)["load_point"] = load;
+  }
+  if (reading.roll != 0 || reading.stance_roll) {
+    Json roll = Json::object();
+    roll["degrees"] = reading.roll / kDegree;
+    roll["rule"] = reading.stance_roll ? "stance" : "given";
+    if (reading.stance_roll) {
+      roll["heel_eversion_deg"] = reading.heel_eversion / kDegree;
+      roll["calcaneal_stance_deg"] = reading.calcaneal_stance / kDegree;
+    }
+    (*summary)["roll"] = roll;
   }
   if (!reading.foot_regions) return "";
   const std::vector<double> ends = FootRegionEnds();

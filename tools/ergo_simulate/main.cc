@@ -5,9 +5,10 @@
 // tools/plot_simulation.py), as one unit (a killed run leaves the previous OUT or none). The work
 // is SolveStaticEquilibrium (ergo/design/static_equilibrium.h); its progress (placement,
 // calibration steps, Newton iterations, elapsed time) goes to stderr unless --progress=false.
-// --load_point and --regions read the body along its length as ergo_optimize reads the shoe's foot
-// (length_reading.h). Exit status: 0 converged with the stiffness asked for, 1 the computation did
-// not succeed (not converged, no contact, stiffness calibration failed: the summary says why; or
+// --load_point, --regions and --roll read the body along its length as ergo_optimize reads the
+// shoe's foot (length_reading.h). Exit status: 0 converged with the stiffness asked for, 1 the
+// computation did not succeed (not converged, no contact, stiffness calibration failed: the summary
+// says why; or
 // --max_seconds ran out: nothing written), 2 unusable input, 130 / 143 interrupted (nothing
 // written).
 #include <cmath>
@@ -161,6 +162,8 @@ int Run() {
   options.stall_iterations = FLAGS_stall_iterations;
   options.max_iterations = FLAGS_max_iterations;
   options.target_penetration = FLAGS_target_penetration;
+  options.start_rotation = Eigen::Vector3d(0, 0, length_reading.roll);
+  if (!length_reading.roll_line.empty()) std::cout << length_reading.roll_line << "\n";
   options.place = FLAGS_place == "auto";
   options.gap = FLAGS_gap;
   options.max_seconds = FLAGS_max_seconds;
@@ -284,7 +287,8 @@ int main(int argc, char** argv) {
       "static contact equilibrium of a body on a support\n"
       "  ergo_simulate --body=DIR --support=FILE [--unit=mm] [--external_force=FX,FY,FZ]\n"
       "    [--external_torque=TX,TY,TZ] [--load_point=F [--heel_end=min_z|max_z]]\n"
-      "    [--regions=auto|foot|none] [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto]\n"
+      "    [--regions=auto|foot|none] [--roll=DEG|stance [--calcaneal_stance=DEG]]\n"
+      "    [--lock=tx,tz,...] [--contact_stiffness=KAPPA|auto]\n"
       "    [--support_model=soft [--support_youngs_modulus=PA] [--support_tets=FILE]] --out=OUT");
   try {
     ergo::CheckCommandLine(argc, argv);
