@@ -31,7 +31,7 @@ from . import _ergo
 __all__ = ["Body", "DesignProblem", "InputError", "Interrupted", "Scenario", "build_body",
            "check_mesh", "check_surface", "fit_indentation", "indentation_force", "load_body",
            "minimize", "optimizers", "read_mesh", "read_tet_mesh", "scenario", "simulate",
-           "write_mesh", "write_tet_mesh"]
+           "stance_roll", "write_mesh", "write_tet_mesh"]
 
 
 class Interrupted(KeyboardInterrupt):
@@ -73,16 +73,29 @@ def _support_arrays(support, unit):
 
 def simulate(body, support, unit="m", contact_stiffness="auto", target_penetration=3e-4,
              place=True, gap=1e-3, tolerance=1e-8, max_iterations=100, max_seconds=0,
-             progress=False):
+             progress=False, start_rotation=(0.0, 0.0, 0.0)):
     """The static contact equilibrium of `body` on `support` (a mesh file or (V, F)), as
     `ergo_simulate`. contact_stiffness: kappa in Pa/m, or "auto" (calibrated so that the
-    largest penetration is target_penetration). Returns a dict: ok, message, positions
-    (deformed tet vertices, m), skin_vertices, skin_pressure (Pa, per skin vertex),
-    skin_force (N), support_pressure, support_force, contact_stiffness and summary (the
-    summary.json of ergo_simulate)."""
+    largest penetration is target_penetration). start_rotation: a rotation vector (rad) that
+    turns the rest body about its core's centre before it is placed (a foot's roll about its
+    length: (0, 0, roll), e.g. stance_roll(body)["roll"]; ergo_simulate --roll). Returns a
+    dict: ok, message, positions (deformed tet vertices, m), skin_vertices, skin_pressure (Pa,
+    per skin vertex), skin_force (N), support_pressure, support_force, contact_stiffness and
+    summary (the summary.json of ergo_simulate)."""
     V, F, source = _support_arrays(support, unit)
     return _ergo._simulate(body, V, F, source, contact_stiffness, target_penetration, place, gap,
-                           tolerance, max_iterations, max_seconds, _progress_sink(progress))
+                           tolerance, max_iterations, max_seconds,
+                           [float(v) for v in start_rotation], _progress_sink(progress))
+
+
+def stance_roll(body, calcaneal_stance_deg=6.07, heel_end="auto", foot_side="auto"):
+    """The roll (rad about the length axis z, > 0 turns +x up) that stands a foot's heel at
+    the resting calcaneal stance (degrees everted; default the healthy adults' mean, Sobel et
+    al. 1999), as ergo_optimize --shoe_roll=stance: the heel's bisector drawn on the rest skin,
+    turned with the foot. Returns a dict: roll, heel_eversion (rad, at rest), calcaneal_stance
+    (rad), medial_sign (+1: the medial side is +x), report. Raises ergo.InputError when the
+    body is not a foot whose heel and medial side can be told."""
+    return _ergo._stance_roll(body, calcaneal_stance_deg, heel_end, foot_side)
 
 
 def scenario(name=None, preset=None, flagfile=None, **flags):

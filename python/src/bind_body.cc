@@ -13,6 +13,7 @@
 #include "ergo/design/static_equilibrium.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/mesh_io.h"
+#include "problems/stance_roll.h"
 #include "python/src/bindings.h"
 #include "python/src/body_handle.h"
 #include "python/src/interrupt.h"
@@ -222,8 +223,10 @@ void BindBody(py::module_& m) {
       "_simulate",
       [](const BodyHandle& handle, const Vertices& V, const Triangles& F, const std::string& source,
          const py::object& contact_stiffness, double target_penetration, bool place, double gap,
-         double tolerance, int max_iterations, double max_seconds, const py::object& progress) {
+         double tolerance, int max_iterations, double max_seconds, const Eigen::Vector3d& rotation,
+         const py::object& progress) {
         StaticEquilibriumOptions options;
+        options.start_rotation = rotation;
         if (!(py::isinstance<py::str>(contact_stiffness) &&
               contact_stiffness.cast<std::string>() == "auto")) {
           try {
@@ -270,7 +273,28 @@ void BindBody(py::module_& m) {
       },
       py::arg("body"), py::arg("V"), py::arg("F"), py::arg("source"), py::arg("contact_stiffness"),
       py::arg("target_penetration"), py::arg("place"), py::arg("gap"), py::arg("tolerance"),
-      py::arg("max_iterations"), py::arg("max_seconds"), py::arg("progress"));
+      py::arg("max_iterations"), py::arg("max_seconds"), py::arg("start_rotation"),
+      py::arg("progress"));
+
+  m.def(
+      "_stance_roll",
+      [](const BodyHandle& handle, double calcaneal_stance_deg, const std::string& heel_end,
+         const std::string& foot_side) {
+        AnatomyOptions foot;
+        foot.heel_end = ParseHeelEnd(heel_end, "heel_end");
+        foot.foot_side = ParseFootSide(foot_side, "foot_side");
+        const StanceRoll stance =
+            FindStanceRoll(*handle.body, foot, calcaneal_stance_deg * StanceRoll::kDegree,
+                           30 * StanceRoll::kDegree, "stance_roll");
+        py::dict d;
+        d["roll"] = stance.roll;
+        d["heel_eversion"] = stance.heel_eversion;
+        d["calcaneal_stance"] = stance.calcaneal_stance;
+        d["medial_sign"] = stance.medial_sign;
+        d["report"] = stance.BriefReport();
+        return d;
+      },
+      py::arg("body"), py::arg("calcaneal_stance_deg"), py::arg("heel_end"), py::arg("foot_side"));
 }
 
 }  // namespace ergo::python

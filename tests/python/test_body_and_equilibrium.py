@@ -84,6 +84,41 @@ def test_equilibrium_carries_the_weight(ball):
     assert result["contact_stiffness"] == 3e7
 
 
+def test_start_rotation_turns_the_rest_body_before_it_is_placed(ball):
+    # Known answer: with its rotation locked, the core ends turned by exactly the start
+    # rotation, so every pair of core (attached) vertices is the rest pair turned by
+    # R = exp([0, 0, 0.3]x), to round-off; the weight is carried as before.
+    body = resting(ball)
+    V, F = box(0.1, 0.0, 0.02)
+    result = ergo.simulate(body, (V, F), contact_stiffness=3e7, start_rotation=(0, 0, 0.3))
+    assert result["ok"], result["message"]
+    core = np.flatnonzero(body.attached)
+    c, s = np.cos(0.3), np.sin(0.3)
+    R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    rest = body.rest_vertices[core] - body.rest_vertices[core[0]]
+    moved = result["positions"][core] - result["positions"][core[0]]
+    np.testing.assert_allclose(moved, rest @ R.T, atol=1e-12)
+    np.testing.assert_allclose(result["skin_force"].sum(axis=0), [0, body.mass * 9.81, 0],
+                               atol=1e-6 * body.mass * 9.81)
+    # A ball is no foot: its stance roll is refused with a reason.
+    with pytest.raises(ergo.InputError):
+        ergo.stance_roll(body)
+
+
+def test_stance_roll_of_the_generated_foot_stands_its_heel_at_the_stance():
+    # The generated foot (medial side +x, heel upright at rest: -0.13 degrees) is turned by
+    # medial_sign * (heel eversion - stance): -6.2 degrees for the adults' 6.07 (C++ test
+    # StanceRoll.TurnsTheHeelsBisectorToTheStatedCalcanealStance checks the turned line).
+    foot = ergo.scenario("shoe", preset="quick").body
+    stance = ergo.stance_roll(foot, heel_end="min_z")
+    assert stance["medial_sign"] == 1
+    assert stance["roll"] == pytest.approx(
+        stance["medial_sign"] * (stance["heel_eversion"] - stance["calcaneal_stance"]), abs=1e-15)
+    assert stance["calcaneal_stance"] == pytest.approx(np.radians(6.07), abs=1e-15)
+    assert np.degrees(stance["roll"]) == pytest.approx(-6.2, abs=0.05)
+    assert "stance roll" in stance["report"]
+
+
 def test_auto_stiffness_reaches_the_target_penetration(ball):
     body = resting(ball)
     V, F = box(0.1, 0.0, 0.02)
