@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "ergo/body/body_directory.h"
 #include "ergo/body/layer_builder.h"
+#include "ergo/body/recorded_anatomy.h"
 #include "ergo/body/sample_interpolation.h"
 #include "ergo/body/tissue_fields.h"
 #include "ergo/contact/support.h"
@@ -170,6 +173,15 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
                        "set the core mass when building it (ergo_body build --core_mass)");
     }
     body = std::make_shared<LayeredBody>(LoadLayeredBody(input.body_directory, load, overrides));
+    const std::string record =
+        (std::filesystem::path(input.body_directory) / kBodyJsonFile).string();
+    const RecordedAnatomy recorded =
+        ReadRecordedAnatomy(GetMember(ReadJsonFile(record), "source", record), record);
+    if (report != nullptr && recorded.anatomy == Anatomy::kFoot) {
+      report->scanned_foot = true;
+      report->scan_heel_eversion = recorded.heel_eversion;
+      report->scan_medial_sign = recorded.medial_sign.value_or(0);
+    }
     line << "user body " << input.body_directory;
   } else if (!input.tet_mesh.empty()) {
     body = LoadUserTetMesh(input, load);
@@ -222,6 +234,12 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
     line << "user skin " << input.skin_surface << " (depth " << depth.Describe() << ", E "
          << stiffness.Describe() << ")";
     if (fields.priors) line << "; anatomical priors: " << fields.priors->summary;
+    if (report != nullptr && fields.priors && input.anatomy.anatomy == Anatomy::kFoot) {
+      report->scanned_foot = true;
+      if (std::isfinite(fields.priors->heel_eversion))
+        report->scan_heel_eversion = fields.priors->heel_eversion;
+      report->scan_medial_sign = fields.priors->medial_sign;
+    }
   }
   line << ": " << body->rest().vertices.rows() << " vertices, " << body->rest().tets.rows()
        << " tets, mass " << body->total_mass() << " kg";

@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <vector>
 
 #include "ergo/body/anatomical_priors.h"
-#include "ergo/body/body_directory.h"
 #include "ergo/body/core_lock.h"
-#include "ergo/body/recorded_anatomy.h"
 #include "ergo/design/lengthwise_shares.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/seconds_since.h"
@@ -20,20 +17,6 @@
 #include "problems/profile_block.h"
 
 namespace ergo {
-namespace {
-
-// A user's scan of a foot: a skin surface built with the foot's anatomy, or a body directory
-// whose body.json records it (ergo_body build --anatomy=foot).
-bool ScannedFoot(const UserBodyInput& user) {
-  if (!user.skin_surface.empty()) return user.anatomy.anatomy == Anatomy::kFoot;
-  if (user.body_directory.empty()) return false;
-  const std::string record = (std::filesystem::path(user.body_directory) / kBodyJsonFile).string();
-  return ReadRecordedAnatomy(GetMember(ReadJsonFile(record), "source", record), record).anatomy ==
-         Anatomy::kFoot;
-}
-
-}  // namespace
-
 ShoeScenarioOptions ShoeScenarioOptions::FromPreset(const std::string& preset) {
   ShoeScenarioOptions o;
   o.preset = preset;
@@ -126,14 +109,19 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
   };
   using RollRule = ShoeScenarioOptions::RollRule;
   const bool balance_roll = o.roll_rule == RollRule::kBalance;
-  const bool stance_roll = o.roll_rule == RollRule::kStance ||
-                           (o.roll_rule == RollRule::kAuto && ScannedFoot(o.user_body));
+  const bool stance_roll =
+      o.roll_rule == RollRule::kStance || (o.roll_rule == RollRule::kAuto && r.scanned_foot);
   double roll = o.roll;
   if (stance_roll) {
+    // The heel bisected on the scan as read where it was; else on the body's skin.
     AnatomyOptions anatomy = o.user_body.anatomy;
     if (o.user_body.empty()) anatomy.heel_end = HeelEnd::kMinZ;
-    const StanceRoll stance = FindStanceRoll(*scenario.body, anatomy, o.calcaneal_stance,
-                                             o.roll_balance.max_roll, "shoe stance roll");
+    const StanceRoll stance =
+        r.scan_heel_eversion
+            ? StanceRollFrom(*r.scan_heel_eversion, r.scan_medial_sign, o.calcaneal_stance,
+                             o.roll_balance.max_roll, "the scan", "shoe stance roll")
+            : FindStanceRoll(*scenario.body, anatomy, o.calcaneal_stance, o.roll_balance.max_roll,
+                             "shoe stance roll");
     roll = stance.roll;
     r.roll = stance.BriefReport();
   }

@@ -24,15 +24,24 @@ struct StanceRoll {
   double heel_eversion = 0;     // the heel's bisector at rest, rad (> 0 everted)
   double calcaneal_stance = 0;  // the eversion it stands at, rad
   double medial_sign = 0;       // +1: the medial side is +x
+  std::string measured_on;      // where the heel was bisected: "the scan", "the body's skin"
   std::string BriefReport() const;
 };
 
-// The roll that stands `body`'s heel at `calcaneal_stance` (rad, > 0 everted): the body's
-// rest skin read as a foot (`anatomy`: its heel end and side; auto detects them as
-// `ergo_body build --anatomy=foot` does), its heel bisected, and turned by
-// medial_sign · (heel_eversion − calcaneal_stance). Throws InputError naming `source` when
-// the skin is not a foot whose heel and medial side can be told, or the roll would exceed
-// `max_roll`.
+// The roll that stands a heel whose bisector is `heel_eversion` (rad, > 0 everted) at rest, the
+// medial side at +x if `medial_sign` > 0, at `calcaneal_stance` (rad everted): medial_sign ·
+// (heel_eversion − calcaneal_stance). Throws InputError naming `source` for an unknown heel or
+// side, a non-finite stance, or a roll beyond `max_roll`.
+StanceRoll StanceRollFrom(double heel_eversion, double medial_sign, double calcaneal_stance,
+                          double max_roll, const std::string& measured_on,
+                          const std::string& source);
+
+// The same, the heel bisected on `body`'s rest skin read as a foot (`anatomy`: its heel end
+// and side; auto detects them as `ergo_body build --anatomy=foot` does). Throws InputError
+// naming `source` when the skin is not a foot whose heel and medial side can be told, or the
+// roll would exceed `max_roll`. A scan's own bisector, measured on the scan as read before
+// meshing (ScenarioBuildReport, RecordedAnatomy), is preferred where there is one: the meshed
+// skins' differ from it by up to 0.8° with the edge length (their heels' facets).
 StanceRoll FindStanceRoll(const LayeredBody& body, const AnatomyOptions& anatomy,
                           double calcaneal_stance, double max_roll, const std::string& source);
 

@@ -39,6 +39,22 @@ RecordedAnatomy ReadRecordedAnatomy(const Json& source, const std::string& file)
   }
   if (heel_z && toe_z && *heel_z != *toe_z)
     recorded.heel_end = *heel_z < *toe_z ? HeelEnd::kMinZ : HeelEnd::kMaxZ;
+  const Json* eversion = FindMember(source, "heel_eversion_deg");
+  const Json* side = FindMember(source, "medial_side");
+  if (eversion != nullptr && side != nullptr) {
+    if (!eversion->is_number() || !std::isfinite(eversion->get<double>()) ||
+        std::abs(eversion->get<double>()) > 90) {
+      throw InputError(file, "source.heel_eversion_deg", "is not an angle in degrees",
+                       "rebuild the body with ergo_body");
+    }
+    if (!side->is_string() ||
+        (side->get<std::string>() != "+x" && side->get<std::string>() != "-x")) {
+      throw InputError(file, "source.medial_side", "is neither \"+x\" nor \"-x\"",
+                       "rebuild the body with ergo_body");
+    }
+    recorded.heel_eversion = eversion->get<double>() * M_PI / 180;
+    recorded.medial_sign = side->get<std::string>() == "+x" ? 1.0 : -1.0;
+  }
   return recorded;
 }
 

@@ -91,8 +91,9 @@ def simulate(body, support, unit="m", contact_stiffness="auto", target_penetrati
 def stance_roll(body, calcaneal_stance_deg=6.07, heel_end="auto", foot_side="auto"):
     """The roll (rad about the length axis z, > 0 turns +x up) that stands a foot's heel at
     the resting calcaneal stance (degrees everted; default the healthy adults' mean, Sobel et
-    al. 1999), as ergo_optimize --shoe_roll=stance: the heel's bisector drawn on the rest skin,
-    turned with the foot. Returns a dict: roll, heel_eversion (rad, at rest), calcaneal_stance
+    al. 1999), as ergo_optimize --shoe_roll=stance: the heel's bisector drawn on the body's rest
+    skin (the tools take the scan's own, recorded in body.json, which differs by the mesh's
+    facets: up to 0.8 degrees), turned with the foot. Returns a dict: roll, heel_eversion (rad, at rest), calcaneal_stance
     (rad), medial_sign (+1: the medial side is +x), report. Raises ergo.InputError when the
     body is not a foot whose heel and medial side can be told."""
     return _ergo._stance_roll(body, calcaneal_stance_deg, heel_end, foot_side)

@@ -3,6 +3,8 @@
 // record that was edited into nonsense.
 #include "ergo/body/recorded_anatomy.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "ergo/mesh/input_error.h"
@@ -35,6 +37,25 @@ TEST(Body, RecordedFootTellsItsHeelEndFromItsLandmarks) {
   const RecordedAnatomy at_max = ReadRecordedAnatomy(FootSource(0.13, -0.12), "body.json");
   ASSERT_TRUE(at_max.heel_end.has_value());
   EXPECT_EQ(*at_max.heel_end, HeelEnd::kMaxZ);
+}
+
+// The heel's bisector as measured on the scan (ergo_body build writes it for a foot whose heel
+// could be bisected) reads back in radians with its medial side; a record without it (bodies
+// built before) says nothing of it.
+TEST(Body, RecordedFootGivesBackTheHeelsBisectorMeasuredOnTheScan) {
+  Json source = FootSource(-0.12, 0.13);
+  EXPECT_FALSE(ReadRecordedAnatomy(source, "body.json").heel_eversion.has_value());
+  source["heel_eversion_deg"] = 0.9;
+  source["medial_side"] = "-x";
+  const RecordedAnatomy recorded = ReadRecordedAnatomy(source, "body.json");
+  ASSERT_TRUE(recorded.heel_eversion.has_value() && recorded.medial_sign.has_value());
+  EXPECT_DOUBLE_EQ(*recorded.heel_eversion, 0.9 * M_PI / 180);
+  EXPECT_EQ(*recorded.medial_sign, -1);
+  source["medial_side"] = "left";
+  EXPECT_THROW(ReadRecordedAnatomy(source, "body.json"), InputError);
+  source["medial_side"] = "+x";
+  source["heel_eversion_deg"] = "upright";
+  EXPECT_THROW(ReadRecordedAnatomy(source, "body.json"), InputError);
 }
 
 TEST(Body, RecordWithoutAnatomyOrWithoutBothEndsSaysNothingOfTheHeel) {

@@ -442,6 +442,24 @@ TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
   EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/summary.json"), "region_shares"), nullptr);
   EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/plot_data.json"), "regions"), nullptr);
   EXPECT_FALSE(fs::exists(*dir_ + "/foot_quiet/pressure_map.png"));
+  // A foot built from a scan records its heel's bisector as measured on the scan; --roll=stance
+  // stands it from that record without bisecting the (here round) skin: a heel 2 degrees
+  // everted at rest with its medial side at -x is turned by -(2 - 6.07) = 4.07 degrees.
+  record["source"]["heel_eversion_deg"] = 2.0;
+  record["source"]["medial_side"] = "-x";
+  WriteJsonFile(foot + "/body.json", record);
+  const CommandResult stance =
+      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
+                 " --support=" + *dir_ +
+                 "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
+                 "--roll=stance --out=" +
+                 *dir_ + "/foot_stance");
+  ASSERT_EQ(stance.status, 0) << stance.output;
+  EXPECT_NE(stance.output.find("on the scan"), std::string::npos) << stance.output;
+  const Json stood = ReadJsonFile(*dir_ + "/foot_stance/summary.json");
+  const Json& roll = GetMember(stood, "roll", "summary");
+  EXPECT_NEAR(GetNumber(roll, "degrees", "roll"), 4.07, 1e-12);
+  EXPECT_NEAR(GetNumber(roll, "heel_eversion_deg", "roll"), 2.0, 1e-12);
 }
 
 // The slab as foam (--support_model=soft): Mesh_3 of the slab, its bottom held; the ball sinks

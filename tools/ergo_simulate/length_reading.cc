@@ -107,11 +107,17 @@ void ResolveLengthReading(const std::string& body_dir, const LayeredBody& body,
     reading->heel_at_min_z = HeelAtMinZ(body.rest().vertices, end, "--heel_end");
   }
   if (reading->stance_roll) {
+    // The heel as bisected on the scan before meshing (body.json) unless the side is stated;
+    // else on the body's skin.
     AnatomyOptions foot;
     foot.heel_end = reading->heel_at_min_z ? HeelEnd::kMinZ : HeelEnd::kMaxZ;
     foot.foot_side = reading->foot_side;
+    const bool recorded_heel = recorded.heel_eversion && reading->foot_side == FootSide::kAuto;
     const StanceRoll stance =
-        FindStanceRoll(body, foot, reading->calcaneal_stance, kMaxRoll, "--roll=stance");
+        recorded_heel
+            ? StanceRollFrom(*recorded.heel_eversion, *recorded.medial_sign,
+                             reading->calcaneal_stance, kMaxRoll, "the scan", "--roll=stance")
+            : FindStanceRoll(body, foot, reading->calcaneal_stance, kMaxRoll, "--roll=stance");
     reading->roll = stance.roll;
     reading->roll_line = stance.BriefReport();
     reading->heel_eversion = stance.heel_eversion;
