@@ -111,8 +111,8 @@ Scenario MakeMouseScenario(const MouseScenarioOptions& o, ScenarioBuildReport* r
   }
   FinishScenario(
       std::string("mouse (") + o.preset + (o.negative_image ? ", negative image)" : ", neutral)"),
-      support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.design_space, std::move(active),
-      &scenario, &r);
+      support.str(), o.contact_stiffness, o.free_fall_mass_scale, o.design_space,
+      std::move(active), &scenario, &r);
   return scenario;
 }
 
