@@ -389,12 +389,13 @@ TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
       Json::array({Json{{"name", "heel"}, {"point_m", {0.0, -0.05, 0.04}}},
                    Json{{"name", "toe tip"}, {"point_m", {0.0, -0.04, -0.05}}}});
   WriteJsonFile(foot + "/body.json", record);
-  const CommandResult run =
-      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
-                 " --support=" + *dir_ +
-                 "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
-                 "--out=" +
-                 *dir_ + "/foot_split");
+  auto simulate_foot = [&](const std::string& extra, const std::string& out) {
+    return RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
+                      " --support=" + *dir_ +
+                      "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 " +
+                      extra + " --out=" + *dir_ + "/" + out);
+  };
+  const CommandResult run = simulate_foot("", "foot_split");
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("load split rearfoot / midfoot / forefoot"), std::string::npos)
       << run.output;
@@ -432,12 +433,7 @@ TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
               -0.3 * (GetNumber(bands[0], "v_from", "band") - GetNumber(bands[2], "v_to", "band")),
               1e-12);
   // --regions=none keeps it out; --plot=false writes the map's data but no picture.
-  const CommandResult quiet =
-      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
-                 " --support=" + *dir_ +
-                 "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
-                 "--regions=none --out=" +
-                 *dir_ + "/foot_quiet");
+  const CommandResult quiet = simulate_foot("--regions=none", "foot_quiet");
   ASSERT_EQ(quiet.status, 0) << quiet.output;
   EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/summary.json"), "region_shares"), nullptr);
   EXPECT_EQ(FindMember(ReadJsonFile(*dir_ + "/foot_quiet/plot_data.json"), "regions"), nullptr);
@@ -448,12 +444,7 @@ TEST_F(ToolsSimulate, RecordedFootGetsTheLoadSplitFromItsHeel) {
   record["source"]["heel_eversion_deg"] = 2.0;
   record["source"]["medial_side"] = "-x";
   WriteJsonFile(foot + "/body.json", record);
-  const CommandResult stance =
-      RunCommand("timeout 300 " ERGO_BIN_DIR "/ergo_simulate --plot=false --body=" + foot +
-                 " --support=" + *dir_ +
-                 "/slab_mm.stl --unit=mm --lock=tx,tz,rx,ry,rz --contact_stiffness=1e8 "
-                 "--roll=stance --out=" +
-                 *dir_ + "/foot_stance");
+  const CommandResult stance = simulate_foot("--roll=stance", "foot_stance");
   ASSERT_EQ(stance.status, 0) << stance.output;
   EXPECT_NE(stance.output.find("on the scan"), std::string::npos) << stance.output;
   const Json stood = ReadJsonFile(*dir_ + "/foot_stance/summary.json");
