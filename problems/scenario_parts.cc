@@ -179,8 +179,7 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
         ReadRecordedAnatomy(GetMember(ReadJsonFile(record), "source", record), record);
     if (report != nullptr && recorded.anatomy == Anatomy::kFoot) {
       report->scanned_foot = true;
-      report->scan_heel_eversion = recorded.heel_eversion;
-      report->scan_medial_sign = recorded.medial_sign.value_or(0);
+      report->scanned_heel = recorded.heel;
     }
     line << "user body " << input.body_directory;
   } else if (!input.tet_mesh.empty()) {
@@ -236,9 +235,7 @@ std::shared_ptr<LayeredBody> LoadUserBody(const UserBodyInput& input, double def
     if (fields.priors) line << "; anatomical priors: " << fields.priors->summary;
     if (report != nullptr && fields.priors && input.anatomy.anatomy == Anatomy::kFoot) {
       report->scanned_foot = true;
-      if (std::isfinite(fields.priors->heel_eversion))
-        report->scan_heel_eversion = fields.priors->heel_eversion;
-      report->scan_medial_sign = fields.priors->medial_sign;
+      report->scanned_heel = fields.priors->heel;
     }
   }
   line << ": " << body->rest().vertices.rows() << " vertices, " << body->rest().tets.rows()

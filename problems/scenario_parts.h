@@ -88,11 +88,9 @@ struct ScenarioBuildReport {
   double roll_radians = 0;     // the body's start roll about its length axis (z)
   double skin_edge = 0;        // mean skin edge near the designed region, m
   // A user's scan read as a foot (a skin with --anatomy=foot, or a body directory built so),
-  // and, when it was measured, its heel's bisector on the scan as read, before meshing (rad,
-  // > 0 everted) with its medial side (+1: +x).
+  // and, when it was measured, its heel's bisector on the scan as read, before meshing.
   bool scanned_foot = false;
-  std::optional<double> scan_heel_eversion;
-  double scan_medial_sign = 0;
+  std::optional<ScannedHeel> scanned_heel;
 };
 
 // The scenario's body: the user's when `user` is set, else `spec()` meshed by the body

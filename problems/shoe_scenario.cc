@@ -117,11 +117,10 @@ Scenario MakeShoeScenario(const ShoeScenarioOptions& o, ScenarioBuildReport* rep
     AnatomyOptions anatomy = o.user_body.anatomy;
     if (o.user_body.empty()) anatomy.heel_end = HeelEnd::kMinZ;
     const StanceRoll stance =
-        r.scan_heel_eversion
-            ? StanceRollFrom(*r.scan_heel_eversion, r.scan_medial_sign, o.calcaneal_stance,
-                             o.roll_balance.max_roll, "the scan", "shoe stance roll")
-            : FindStanceRoll(*scenario.body, anatomy, o.calcaneal_stance, o.roll_balance.max_roll,
-                             "shoe stance roll");
+        r.scanned_heel ? StanceRollFrom(*r.scanned_heel, o.calcaneal_stance,
+                                        o.roll_balance.max_roll, "the scan", "shoe stance roll")
+                       : FindStanceRoll(*scenario.body, anatomy, o.calcaneal_stance,
+                                        o.roll_balance.max_roll, "shoe stance roll");
     roll = stance.roll;
     r.roll = stance.BriefReport();
   }

@@ -16,9 +16,9 @@ std::string StanceRoll::BriefReport() const {
   return out.str();
 }
 
-StanceRoll StanceRollFrom(double heel_eversion, double medial_sign, double calcaneal_stance,
-                          double max_roll, const std::string& measured_on,
-                          const std::string& source) {
+StanceRoll StanceRollFrom(const ScannedHeel& heel, double calcaneal_stance, double max_roll,
+                          const std::string& measured_on, const std::string& source) {
+  const double heel_eversion = heel.eversion, medial_sign = heel.medial_sign;
   if (!std::isfinite(calcaneal_stance))
     throw InputError(source, "calcaneal stance", "not a finite angle", "give degrees, e.g. 6.07");
   if (!std::isfinite(heel_eversion) || !(medial_sign == 1 || medial_sign == -1)) {
@@ -47,19 +47,16 @@ StanceRoll StanceRollFrom(double heel_eversion, double medial_sign, double calca
 
 StanceRoll FindStanceRoll(const LayeredBody& body, const AnatomyOptions& anatomy,
                           double calcaneal_stance, double max_roll, const std::string& source) {
-  if (!std::isfinite(calcaneal_stance))
-    throw InputError(source, "calcaneal stance", "not a finite angle", "give degrees, e.g. 6.07");
   AnatomyOptions foot = anatomy;
   foot.anatomy = Anatomy::kFoot;
   const AnatomicalPriors priors =
       ComputeAnatomicalPriors(body.skin().RestSurface(body.rest().vertices), foot, source);
-  if (!std::isfinite(priors.heel_eversion)) {
+  if (!priors.heel) {
     throw InputError(source, "heel",
                      "the heel's outline could not be bisected, so the stance roll is unknown",
                      "give the roll in degrees instead");
   }
-  return StanceRollFrom(priors.heel_eversion, priors.medial_sign, calcaneal_stance, max_roll,
-                        "the body's skin", source);
+  return StanceRollFrom(*priors.heel, calcaneal_stance, max_roll, "the body's skin", source);
 }
 
 }  // namespace ergo

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "ergo/body/anatomical_priors.h"
+#include "ergo/body/heel_bisector.h"
 #include "ergo/body/layered_body.h"
 
 namespace ergo {
@@ -28,13 +29,12 @@ struct StanceRoll {
   std::string BriefReport() const;
 };
 
-// The roll that stands a heel whose bisector is `heel_eversion` (rad, > 0 everted) at rest, the
-// medial side at +x if `medial_sign` > 0, at `calcaneal_stance` (rad everted): medial_sign ·
-// (heel_eversion − calcaneal_stance). Throws InputError naming `source` for an unknown heel or
-// side, a non-finite stance, or a roll beyond `max_roll`.
-StanceRoll StanceRollFrom(double heel_eversion, double medial_sign, double calcaneal_stance,
-                          double max_roll, const std::string& measured_on,
-                          const std::string& source);
+// The roll that stands `heel` (its bisector at rest, bisected on `measured_on`) at
+// `calcaneal_stance` (rad everted): medial_sign · (eversion − calcaneal_stance). Throws
+// InputError naming `source` for a non-finite angle, a side neither +1 nor −1, or a roll beyond
+// `max_roll`.
+StanceRoll StanceRollFrom(const ScannedHeel& heel, double calcaneal_stance, double max_roll,
+                          const std::string& measured_on, const std::string& source);
 
 // The same, the heel bisected on `body`'s rest skin read as a foot (`anatomy`: its heel end
 // and side; auto detects them as `ergo_body build --anatomy=foot` does). Throws InputError

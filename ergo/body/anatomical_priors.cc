@@ -6,7 +6,6 @@
 #include <limits>
 #include <sstream>
 
-#include "ergo/body/heel_bisector.h"
 #include "ergo/mesh/input_error.h"
 #include "ergo/mesh/surface_geometry.h"
 
@@ -479,12 +478,12 @@ AnatomicalPriors ComputeAnatomicalPriors(const TriMesh& skin, const AnatomyOptio
             << (priors.toe_clearance > 0.005
                     ? " (toes held up: a standing foot's rest on the floor)"
                     : "");
-    priors.medial_sign = foot.medial_sign;
     try {
-      priors.heel_eversion = MeasureHeelBisector(skin, frame.start_at_min, foot.medial_sign,
-                                                 HeelBisectorOptions(), source)
-                                 .eversion;
-      const double degrees = priors.heel_eversion * 180 / M_PI;
+      priors.heel = ScannedHeel{MeasureHeelBisector(skin, frame.start_at_min, foot.medial_sign,
+                                                    HeelBisectorOptions(), source)
+                                    .eversion,
+                                foot.medial_sign};
+      const double degrees = priors.heel->eversion * 180 / M_PI;
       summary << ", the heel's bisector " << std::round(10 * std::abs(degrees)) / 10 << " deg "
               << (degrees >= 0 ? "everted" : "inverted") << " as scanned";
     } catch (const InputError&) {

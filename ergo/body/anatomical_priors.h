@@ -15,12 +15,13 @@
 #pragma once
 
 #include <functional>
-#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "ergo/body/heel_bisector.h"
 #include "ergo/body/sample_interpolation.h"
 #include "ergo/mesh/tri_mesh.h"
 
@@ -74,13 +75,11 @@ struct AnatomicalPriors {
   // 10.7 mm), and they then carry nothing (README "Scans"). Above 5 mm (a choice) the summary
   // says they are held up. 0 for the other anatomies.
   double toe_clearance = 0;
-  // Foot: the medial side (+1: +x, −1: −x) and the heel's bisector as scanned
-  // (heel_bisector.h): its eversion from the vertical, rad, > 0 everted; NaN when the heel's
-  // outline could not be bisected. A scan of a foot at rest stands its heel about upright
-  // (the FIND template: 0.9° everted), where standing adults' heels stand about 6° everted
-  // (problems/stance_roll.h). 0 and NaN for the other anatomies.
-  double medial_sign = 0;
-  double heel_eversion = std::numeric_limits<double>::quiet_NaN();
+  // Foot: the heel's bisector as scanned (heel_bisector.h) with the foot's medial side; empty
+  // when the heel's outline could not be bisected, and for the other anatomies. A scan of a
+  // foot at rest stands its heel about upright (the FIND template: 0.91° everted), where
+  // standing adults' heels stand about 6° everted (problems/stance_roll.h).
+  std::optional<ScannedHeel> heel;
   std::string summary;  // one paragraph for people: the frame, the landmarks, the ranges
   // Where the part has no bones, the core is cut away: a signed implicit (m, positive
   // beyond the cut) for BuilderOptions::core_limit; empty for none. Foot: a plane across the

@@ -169,9 +169,9 @@ BuiltBody BuildBody(const BodyBuildOptions& body) {
         landmarks.push_back(entry);
       }
       source["landmarks"] = landmarks;
-      if (std::isfinite(fields.priors->heel_eversion)) {
-        source["heel_eversion_deg"] = fields.priors->heel_eversion * 180 / M_PI;
-        source["medial_side"] = fields.priors->medial_sign > 0 ? "+x" : "-x";
+      if (const std::optional<ScannedHeel>& heel = fields.priors->heel) {
+        source["heel_eversion_deg"] = heel->eversion * 180 / M_PI;
+        source["medial_side"] = heel->medial_sign > 0 ? "+x" : "-x";
       }
       report << "anatomical priors: " << fields.priors->summary << "\n";
     }

@@ -23,6 +23,13 @@ struct HeelBisectorOptions {
   int min_slices = 4;          // fewer slices with an outline: the heel cannot be bisected
 };
 
+// A foot's heel as read on its scan, all a stance needs: the bisector's eversion (rad, > 0
+// everted) and the foot's medial side (+1: +x, −1: −x), which says which way is eversion.
+struct ScannedHeel {
+  double eversion = 0;
+  double medial_sign = 1;
+};
+
 struct HeelBisector {
   // Angle of the bisector from the vertical, rad: > 0 everted (its top medial of its base).
   double eversion = 0;

@@ -52,8 +52,8 @@ RecordedAnatomy ReadRecordedAnatomy(const Json& source, const std::string& file)
       throw InputError(file, "source.medial_side", "is neither \"+x\" nor \"-x\"",
                        "rebuild the body with ergo_body");
     }
-    recorded.heel_eversion = eversion->get<double>() * M_PI / 180;
-    recorded.medial_sign = side->get<std::string>() == "+x" ? 1.0 : -1.0;
+    recorded.heel = ScannedHeel{eversion->get<double>() * M_PI / 180,
+                                side->get<std::string>() == "+x" ? 1.0 : -1.0};
   }
   return recorded;
 }

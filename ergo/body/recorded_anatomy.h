@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ergo/body/anatomical_priors.h"
+#include "ergo/body/heel_bisector.h"
 #include "ergo/mesh/json.h"
 
 namespace ergo {
@@ -17,11 +18,10 @@ struct RecordedAnatomy {
   // A foot's heel end: kMinZ or kMaxZ from its "heel" and "toe tip" landmarks; empty when
   // either is missing or they share a z.
   std::optional<HeelEnd> heel_end;
-  // A foot's heel bisector as measured on the scan before meshing (heel_bisector.h), rad
-  // (> 0 everted), and its medial side (+1: +x); empty for bodies built before they were
-  // recorded, or whose heel could not be bisected.
-  std::optional<double> heel_eversion;
-  std::optional<double> medial_sign;
+  // A foot's heel bisector as measured on the scan before meshing (heel_bisector.h), with its
+  // medial side; empty for bodies built before they were recorded, or whose heel could not be
+  // bisected.
+  std::optional<ScannedHeel> heel;
 };
 
 // Reads `source` (body.json's "source" object). A body built without --anatomy, or one whose

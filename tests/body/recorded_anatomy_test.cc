@@ -44,13 +44,13 @@ TEST(Body, RecordedFootTellsItsHeelEndFromItsLandmarks) {
 // built before) says nothing of it.
 TEST(Body, RecordedFootGivesBackTheHeelsBisectorMeasuredOnTheScan) {
   Json source = FootSource(-0.12, 0.13);
-  EXPECT_FALSE(ReadRecordedAnatomy(source, "body.json").heel_eversion.has_value());
+  EXPECT_FALSE(ReadRecordedAnatomy(source, "body.json").heel.has_value());
   source["heel_eversion_deg"] = 0.9;
   source["medial_side"] = "-x";
   const RecordedAnatomy recorded = ReadRecordedAnatomy(source, "body.json");
-  ASSERT_TRUE(recorded.heel_eversion.has_value() && recorded.medial_sign.has_value());
-  EXPECT_DOUBLE_EQ(*recorded.heel_eversion, 0.9 * M_PI / 180);
-  EXPECT_EQ(*recorded.medial_sign, -1);
+  ASSERT_TRUE(recorded.heel.has_value());
+  EXPECT_DOUBLE_EQ(recorded.heel->eversion, 0.9 * M_PI / 180);
+  EXPECT_EQ(recorded.heel->medial_sign, -1);
   source["medial_side"] = "left";
   EXPECT_THROW(ReadRecordedAnatomy(source, "body.json"), InputError);
   source["medial_side"] = "+x";

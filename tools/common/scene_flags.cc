@@ -301,12 +301,8 @@ std::optional<double> ShoeLoadPointFlag() {
 void ApplyShoeRollFlag(ShoeScenarioOptions* o) {
   const std::string& text = FLAGS_shoe_roll;
   using RollRule = ShoeScenarioOptions::RollRule;
-  if (!(std::abs(FLAGS_shoe_calcaneal_stance) <= 30)) {
-    throw InputError(
-        "--shoe_calcaneal_stance", "",
-        "'" + std::to_string(FLAGS_shoe_calcaneal_stance) + "' is not an angle within ±30 degrees",
-        "give the resting calcaneal stance position in degrees everted, e.g. 6.07");
-  }
+  RequireInRange("shoe_calcaneal_stance", FLAGS_shoe_calcaneal_stance, -30, 30,
+                 "the resting calcaneal stance position in degrees everted, e.g. 6.07");
   o->calcaneal_stance = FLAGS_shoe_calcaneal_stance * RollBalanceOptions::kDegree;
   if (text != "stance" && text != "auto" &&
       !gflags::GetCommandLineFlagInfoOrDie("shoe_calcaneal_stance").is_default) {

@@ -16,6 +16,7 @@
 #include "ergo/mesh/input_error.h"
 #include "problems/load_point.h"
 #include "problems/stance_roll.h"
+#include "tools/common/flag_checks.h"
 
 DEFINE_string(load_point, "none",
               "the whole load's line of action through the point at this fraction of the "
@@ -68,12 +69,8 @@ LengthReading ParseLengthFlags() {
   reading.auto_regions = FLAGS_regions == "auto";
   reading.heel_end = ParseHeelEnd(FLAGS_heel_end, "--heel_end");
   reading.foot_side = ParseFootSide(FLAGS_foot_side, "--foot_side");
-  if (!(std::abs(FLAGS_calcaneal_stance) <= 30)) {
-    throw InputError(
-        "--calcaneal_stance", "",
-        "'" + std::to_string(FLAGS_calcaneal_stance) + "' is not an angle within ±30 degrees",
-        "give the resting calcaneal stance position in degrees everted, e.g. 6.07");
-  }
+  RequireInRange("calcaneal_stance", FLAGS_calcaneal_stance, -30, 30,
+                 "the resting calcaneal stance position in degrees everted, e.g. 6.07");
   reading.calcaneal_stance = FLAGS_calcaneal_stance * kDegree;
   reading.stance_roll = FLAGS_roll == "stance";
   for (const char* flag : {"calcaneal_stance", "foot_side"}) {
@@ -112,15 +109,12 @@ void ResolveLengthReading(const std::string& body_dir, const LayeredBody& body,
     AnatomyOptions foot;
     foot.heel_end = reading->heel_at_min_z ? HeelEnd::kMinZ : HeelEnd::kMaxZ;
     foot.foot_side = reading->foot_side;
-    const bool recorded_heel = recorded.heel_eversion && reading->foot_side == FootSide::kAuto;
-    const StanceRoll stance =
-        recorded_heel
-            ? StanceRollFrom(*recorded.heel_eversion, *recorded.medial_sign,
-                             reading->calcaneal_stance, kMaxRoll, "the scan", "--roll=stance")
+    reading->stance =
+        recorded.heel && reading->foot_side == FootSide::kAuto
+            ? StanceRollFrom(*recorded.heel, reading->calcaneal_stance, kMaxRoll, "the scan",
+                             "--roll=stance")
             : FindStanceRoll(body, foot, reading->calcaneal_stance, kMaxRoll, "--roll=stance");
-    reading->roll = stance.roll;
-    reading->roll_line = stance.BriefReport();
-    reading->heel_eversion = stance.heel_eversion;
+    reading->roll = reading->stance->roll;
   }
 }
 
@@ -150,9 +144,9 @@ std::string ReportLengthReading(const LengthReading& reading, const LayeredBody&
     Json roll = Json::object();
     roll["degrees"] = reading.roll / kDegree;
     roll["rule"] = reading.stance_roll ? "stance" : "given";
-    if (reading.stance_roll) {
-      roll["heel_eversion_deg"] = reading.heel_eversion / kDegree;
-      roll["calcaneal_stance_deg"] = reading.calcaneal_stance / kDegree;
+    if (reading.stance) {
+      roll["heel_eversion_deg"] = reading.stance->heel_eversion / kDegree;
+      roll["calcaneal_stance_deg"] = reading.stance->calcaneal_stance / kDegree;
     }
     (*summary)["roll"] = roll;
   }

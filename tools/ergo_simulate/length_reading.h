@@ -15,6 +15,7 @@
 #include "ergo/body/layered_body.h"
 #include "ergo/contact/surface_contact.h"
 #include "ergo/mesh/json.h"
+#include "problems/stance_roll.h"
 
 namespace ergo {
 
@@ -30,14 +31,12 @@ struct LengthReading {
   // calcaneal_stance (problems/stance_roll.h), set by ResolveLengthReading.
   double roll = 0;
   bool stance_roll = false;
-  double calcaneal_stance = 0;  // rad everted
-  double heel_eversion = 0;     // the heel's bisector at rest, rad (the stance roll only)
-  std::string roll_line;        // the stance roll's report
+  double calcaneal_stance = 0;       // rad everted
+  std::optional<StanceRoll> stance;  // how the stance roll was found (ResolveLengthReading)
 };
 
 // Reads --load_point, --heel_end, --regions, --roll, --calcaneal_stance and --foot_side
-// (before any work: a bad value is refused at
-// once). Throws InputError naming the flag.
+// (before any work: a bad value is refused at once). Throws InputError naming the flag.
 LengthReading ParseLengthFlags();
 
 // Settles what needs the body: the foot's regions for --regions=auto (a body built with

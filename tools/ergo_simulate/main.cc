@@ -163,7 +163,7 @@ int Run() {
   options.max_iterations = FLAGS_max_iterations;
   options.target_penetration = FLAGS_target_penetration;
   options.start_rotation = Eigen::Vector3d(0, 0, length_reading.roll);
-  if (!length_reading.roll_line.empty()) std::cout << length_reading.roll_line << "\n";
+  if (length_reading.stance) std::cout << length_reading.stance->BriefReport() << "\n";
   options.place = FLAGS_place == "auto";
   options.gap = FLAGS_gap;
   options.max_seconds = FLAGS_max_seconds;
